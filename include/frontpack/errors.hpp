@@ -1,0 +1,116 @@
+// frontpack: the error policy.
+//
+// The library never prints and never exits. Every failure it reports is an exception derived
+// from frontpack::Error, whose what() is a complete, human-readable sentence naming the problem
+// and where it is. The typed accessors carry the same facts for programs. Callers that only
+// want a message catch frontpack::Error; the frontpack tool maps each type to its own exit code.
+#pragma once
+
+#include <cstddef>
+#include <optional>
+#include <stdexcept>
+#include <string>
+
+#include "frontpack/geometry.hpp"
+
+namespace frontpack {
+
+/// Base of every error frontpack throws.
+class Error : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+/// A file could not be opened or read.
+class IoError : public Error {
+ public:
+  IoError(const std::string& message, std::string path);
+  [[nodiscard]] const std::string& path() const noexcept { return path_; }
+
+ private:
+  std::string path_;
+};
+
+/// The WKT text is not a 2D POLYGON or MULTIPOLYGON that frontpack can read.
+///
+/// offset() is the 0-based character offset into the text, line() and column() are 1-based.
+class WktError : public Error {
+ public:
+  enum class Kind {
+    syntax,                ///< malformed text: an unexpected token, a missing parenthesis or comma
+    unsupported_geometry,  ///< a geometry type other than POLYGON / MULTIPOLYGON
+    empty_geometry,        ///< EMPTY (a domain must have area)
+    dimension,             ///< Z / M / ZM geometries or points with more than 2 coordinates
+    bad_number,            ///< a non-finite (nan, inf) or out-of-range number
+  };
+  /// `source` names where the text came from (a file name), or is empty.
+  WktError(Kind kind, std::string detail, std::size_t offset, std::size_t line, std::size_t column,
+           std::string source = {});
+
+  [[nodiscard]] Kind kind() const noexcept { return kind_; }
+  /// The message without its position prefix, e.g. "expected ',' or ')' in a ring's list of points, found 'x'".
+  [[nodiscard]] const std::string& detail() const noexcept { return detail_; }
+  [[nodiscard]] const std::string& source() const noexcept { return source_; }
+  [[nodiscard]] std::size_t offset() const noexcept { return offset_; }
+  [[nodiscard]] std::size_t line() const noexcept { return line_; }
+  [[nodiscard]] std::size_t column() const noexcept { return column_; }
+
+ private:
+  Kind kind_;
+  std::string detail_;
+  std::string source_;
+  std::size_t offset_;
+  std::size_t line_;
+  std::size_t column_;
+};
+
+/// The geometry is not a valid polygonal domain (OGC Simple Features validity).
+///
+/// part() and ring() index the input as given (ring 0 is the outer ring, ring k >= 1 the k-th
+/// hole); vertex() and other_vertex() are 0-based indices of vertices in their rings as written
+/// (an edge i runs from vertex i to vertex i + 1). Facts that do not apply are empty.
+class InvalidDomainError : public Error {
+ public:
+  enum class Kind {
+    empty,                  ///< no polygon at all
+    non_finite_coordinate,  ///< nan or inf in a coordinate
+    coordinate_out_of_range,///< |coordinate| above frontpack::max_coordinate
+    unclosed_ring,          ///< a WKT ring whose last point differs from its first
+    too_few_vertices,       ///< fewer than 3 distinct vertices
+    zero_area,              ///< all vertices of a ring are collinear
+    self_intersection,      ///< two edges of one ring intersect (crossing, touching, or a spike)
+    rings_cross,            ///< two rings cross (properly, or at a common point)
+    rings_overlap,          ///< two rings share a segment of positive length
+    hole_outside_shell,     ///< a hole not inside its outer ring
+    nested_holes,           ///< a hole inside another hole of the same polygon
+    overlapping_parts,      ///< the interiors of two polygons of a multipolygon intersect
+    disconnected_interior,  ///< touching rings split the interior of a polygon
+  };
+
+  struct Site {
+    std::size_t part = 0;
+    std::size_t ring = 0;
+    std::optional<std::size_t> vertex;
+  };
+
+  InvalidDomainError(Kind kind, const std::string& detail, Site site, std::optional<Site> other = {},
+                     std::optional<Point> where = {});
+
+  [[nodiscard]] Kind kind() const noexcept { return kind_; }
+  [[nodiscard]] const Site& site() const noexcept { return site_; }
+  [[nodiscard]] const std::optional<Site>& other_site() const noexcept { return other_; }
+  /// The offending point, where one exists (an intersection, a touch point, a bad vertex).
+  [[nodiscard]] const std::optional<Point>& where() const noexcept { return where_; }
+
+ private:
+  Kind kind_;
+  Site site_;
+  std::optional<Site> other_;
+  std::optional<Point> where_;
+};
+
+/// Name of an error kind, as used in messages and in the test corpus (e.g. "self_intersection").
+[[nodiscard]] const char* to_string(WktError::Kind kind) noexcept;
+[[nodiscard]] const char* to_string(InvalidDomainError::Kind kind) noexcept;
+
+}  // namespace frontpack

@@ -1,0 +1,8 @@
+// frontpack: dense, exactly certified advancing-front disk packings of polygonal domains.
+// Umbrella header (CGAL-free). For CGAL interoperability include "frontpack/cgal.hpp".
+#pragma once
+
+#include "frontpack/domain.hpp"
+#include "frontpack/errors.hpp"
+#include "frontpack/geometry.hpp"
+#include "frontpack/version.hpp"

@@ -1,0 +1,67 @@
+#include "exact.hpp"
+
+namespace frontpack::detail {
+
+namespace {
+
+template <class NT>
+CGAL::Uncertain<CGAL::Comparison_result> distance_to_segment(const NT& cx, const NT& cy, const NT& ax,
+                                                             const NT& ay, const NT& bx, const NT& by,
+                                                             const NT& r) {
+  using CGAL::Uncertain;
+  const NT dx = bx - ax;
+  const NT dy = by - ay;
+  const NT wx = cx - ax;
+  const NT wy = cy - ay;
+  const NT r2 = r * r;
+  // Which part of the segment is nearest: a, b, or its interior. All branches are decided
+  // exactly; an uncertain branch returns "uncertain" so that the exact number type decides.
+  const NT t = wx * dx + wy * dy;
+  const auto before_a = t <= NT(0);
+  if (!CGAL::is_certain(before_a)) {
+    return Uncertain<CGAL::Comparison_result>::indeterminate();
+  }
+  if (CGAL::get_certain(before_a)) {
+    return CGAL::compare(wx * wx + wy * wy, r2);
+  }
+  const NT len2 = dx * dx + dy * dy;
+  const auto after_b = t >= len2;
+  if (!CGAL::is_certain(after_b)) {
+    return Uncertain<CGAL::Comparison_result>::indeterminate();
+  }
+  if (CGAL::get_certain(after_b)) {
+    const NT ux = cx - bx;
+    const NT uy = cy - by;
+    return CGAL::compare(ux * ux + uy * uy, r2);
+  }
+  // Interior: distance^2 = cross^2 / len2; compare without dividing.
+  const NT cross = dx * wy - dy * wx;
+  return CGAL::compare(cross * cross, r2 * len2);
+}
+
+template <class NT>
+CGAL::Uncertain<CGAL::Comparison_result> centre_distance(const NT& x1, const NT& y1, const NT& x2, const NT& y2,
+                                                         const NT& r1, const NT& r2) {
+  const NT dx = x1 - x2;
+  const NT dy = y1 - y2;
+  const NT s = r1 + r2;
+  return CGAL::compare(dx * dx + dy * dy, s * s);
+}
+
+}  // namespace
+
+CGAL::Comparison_result compare_distance_to_segment(Point c, Point a, Point b, double r) {
+  return filtered<CGAL::Comparison_result>([&](auto tag) {
+    using NT = decltype(tag);
+    return distance_to_segment(NT(c.x), NT(c.y), NT(a.x), NT(a.y), NT(b.x), NT(b.y), NT(r));
+  });
+}
+
+CGAL::Comparison_result compare_centre_distance(Point c1, Point c2, double r1, double r2) {
+  return filtered<CGAL::Comparison_result>([&](auto tag) {
+    using NT = decltype(tag);
+    return centre_distance(NT(c1.x), NT(c1.y), NT(c2.x), NT(c2.y), NT(r1), NT(r2));
+  });
+}
+
+}  // namespace frontpack::detail

@@ -1,0 +1,22 @@
+# Tests of the frontpack tool: exit codes and messages (run through tests/run_tool.cmake, which
+# checks the exit code and a regular expression on the combined output).
+function(frontpack_tool_test name expected_exit regex)
+  add_test(NAME tool.${name}
+    COMMAND ${CMAKE_COMMAND} -DTOOL=$<TARGET_FILE:frontpack_tool> -DEXPECTED_EXIT=${expected_exit}
+            "-DREGEX=${regex}" "-DARGS=${ARGN}" -P ${CMAKE_CURRENT_SOURCE_DIR}/run_tool.cmake)
+endfunction()
+
+set(S ${PROJECT_SOURCE_DIR}/shapes)
+set(D ${CMAKE_CURRENT_SOURCE_DIR}/data/invalid)
+frontpack_tool_test(info_concave 0 "polygons: +1.*area: +0.6875" info ${S}/concave_polygon.wkt)
+frontpack_tool_test(info_islands 0 "polygons: +4.*holes: +1" info ${S}/islands.wkt)
+frontpack_tool_test(info_inline_wkt 0 "area: +2" info --wkt "POLYGON((0 0,2 0,2 1,0 1,0 0))")
+frontpack_tool_test(help 0 "Example:.*frontpack info shapes/concave_polygon.wkt" info --help)
+frontpack_tool_test(version 0 "0\\.1\\.0" --version)
+frontpack_tool_test(no_subcommand 1 "subcommand" "")
+frontpack_tool_test(unknown_option 1 "--bogus" info --bogus ${S}/unit_square.wkt)
+frontpack_tool_test(missing_file 2 "cannot open '/nonexistent.wkt': No such file or directory" info /nonexistent.wkt)
+frontpack_tool_test(directory 2 "is a directory" info ${S})
+frontpack_tool_test(wkt_syntax 3 "WKT error at line 1, column 26 .*expected ',' or '\\)'" info --wkt "POLYGON((0 0,1 0,1 1,0 0)")
+frontpack_tool_test(wkt_point 3 "unsupported geometry type POINT" info --wkt "POINT(1 2)")
+frontpack_tool_test(invalid_bowtie 4 "invalid domain: polygon 0, outer ring: edge 0 .* and edge 2 .* cross" info --wkt "POLYGON((0 0,1 1,1 0,0 1,0 0))")
