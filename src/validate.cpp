@@ -11,6 +11,8 @@
 #include <CGAL/box_intersection_d.h>
 
 #include <algorithm>
+#include <cstdio>
+#include <deque>
 #include <cmath>
 #include <optional>
 #include <string>
@@ -27,6 +29,13 @@ namespace {
 
 using Kind = InvalidDomainError::Kind;
 using Site = InvalidDomainError::Site;
+
+// A constructed (rounded) point: 10 significant digits are all that mean anything.
+std::string format_point_approx(Point p) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "(%.10g %.10g)", p.x, p.y);
+  return buf;
+}
 
 std::string ring_name(std::size_t part, std::size_t ring) {
   return "polygon " + std::to_string(part) + (ring == 0 ? ", outer ring" : ", hole " + std::to_string(ring));
@@ -101,8 +110,9 @@ RingSet make_ring_set(const RawParts& parts, bool require_closed, const SourceLo
       }
       if (info.count < 3) {
         throw InvalidDomainError(Kind::too_few_vertices,
-                                 ring_name(p, r) + ": the ring has " + std::to_string(info.count) +
-                                     " distinct vertices; a ring needs at least 3",
+                                 ring_name(p, r) + ": the ring has " + std::to_string(info.count) + " distinct " +
+                                     (info.count == 1 ? "vertex" : "vertices") + "; a ring needs at least 3" +
+                                     (where ? where(p, r, 0) : std::string()),
                                  Site{p, r, {}}, {}, pts.front());
       }
       const auto ring_index = static_cast<std::uint32_t>(rs.rings.size());
@@ -175,7 +185,9 @@ class Validator {
         flat = orientation(a, b, rs_.v[info.first + k]) == 0;
       }
       if (flat) {
-        throw InvalidDomainError(Kind::zero_area, name(r) + ": the ring has zero area (all its vertices are collinear)",
+        throw InvalidDomainError(Kind::zero_area,
+                                 name(r) + ": the ring has zero area: all its vertices are collinear, from " +
+                                     vertex(info.first),
                                  site(info.first), {}, a);
       }
     }
@@ -184,7 +196,7 @@ class Validator {
   // A problem found by the pairwise pass; the one with the smallest pair of edges is reported,
   // so the message does not depend on the order in which the boxes are visited.
   struct Problem {
-    std::pair<std::uint32_t, std::uint32_t> key;
+    std::tuple<int, std::uint32_t, std::uint32_t> key;
     Kind kind;
     std::string detail;
     Site a;
@@ -192,8 +204,10 @@ class Validator {
     std::optional<Point> where;
   };
 
-  void report(std::uint32_t e, std::uint32_t f, Kind kind, std::string detail, std::optional<Point> where) {
-    const std::pair<std::uint32_t, std::uint32_t> key{std::min(e, f), std::max(e, f)};
+  // rank 0 is reported before rank 1 (a spike names its cause better than the touches it makes).
+  void report(std::uint32_t e, std::uint32_t f, Kind kind, std::string detail, std::optional<Point> where,
+              int rank = 1) {
+    const std::tuple<int, std::uint32_t, std::uint32_t> key{rank, std::min(e, f), std::max(e, f)};
     if (!problem_ || key < problem_->key) {
       problem_ = Problem{key, kind, std::move(detail), site(e), site(f), where};
     }
@@ -242,7 +256,7 @@ class Validator {
         report(e, f, Kind::self_intersection,
                name(re) + ": " + edge(e) + " and " + edge(f) + " fold back on each other at " + vertex(at) +
                    " (a zero-width spike)",
-               s);
+               s, 0);
       }
       return;
     }
@@ -290,7 +304,7 @@ class Validator {
           at = Point{pt->x(), pt->y()};
         }
       }
-      const std::string near = at ? " near " + format_point(*at) : "";
+      const std::string near = at ? " near " + format_point_approx(*at) : "";
       if (same_ring) {
         report(e, f, Kind::self_intersection, name(re) + ": " + edge(e) + " and " + edge(f) + " cross" + near, at);
       } else {
@@ -342,6 +356,19 @@ class Validator {
     return {rs_.v[e], rs_.v[b]};
   }
 
+  // A vertex at the touch point: of ring a if it has one there, else of ring b.
+  [[nodiscard]] std::uint32_t vertex_at(const Touch& t) const {
+    for (const std::uint32_t e : {t.edge_a, t.edge_b}) {
+      if (rs_.v[e] == t.p) {
+        return e;
+      }
+      if (rs_.v[rs_.next[e]] == t.p) {
+        return rs_.next[e];
+      }
+    }
+    return t.edge_a;  // unreachable: a touch point is a vertex of one of the rings
+  }
+
   // Whether q lies strictly inside the wedge swept anticlockwise about apex s from direction u
   // to direction w (u and w are points on the wedge's two rays).
   [[nodiscard]] static bool in_wedge(Point s, Point u, Point w, Point q) {
@@ -373,8 +400,8 @@ class Validator {
       const bool in2 = in_wedge(t.p, a_next, a_prev, b_next);
       if (in1 != in2) {
         throw InvalidDomainError(Kind::rings_cross,
-                                 name(t.ring_a) + " and " + name(t.ring_b) + " cross at their common point " +
-                                     format_point(t.p),
+                                 name(t.ring_a) + " and " + name(t.ring_b) + " cross at their common point, " +
+                                     vertex(vertex_at(t)) + ", without a proper crossing of edges",
                                  site(t.edge_a), site(t.edge_b), t.p);
       }
     }
@@ -480,19 +507,23 @@ class Validator {
         odd = odd_rings_exact(r);
       }
       const std::uint32_t at = k ? *k : info.first;
+      // What the parity was taken at: a free vertex, or a point inside the first edge.
+      const std::string witness =
+          k ? vertex(*k) : "the inside of its " + edge(info.first) + " (each of its vertices touches another ring)";
+      const std::optional<Point> witness_point = k ? std::optional<Point>(rs_.v[*k]) : std::nullopt;
       const std::uint32_t own_shell = rs_.part_first_ring[info.part];
       if (info.ring > 0) {
         if (std::find(odd.begin(), odd.end(), own_shell) == odd.end()) {
           throw InvalidDomainError(Kind::hole_outside_shell,
-                                   name(r) + ": the hole is not inside its outer ring (" + vertex(at) +
+                                   name(r) + ": the hole is not inside its outer ring (" + witness +
                                        " lies outside it)",
-                                   site(at), site(rs_.rings[own_shell].first), rs_.v[at]);
+                                   site(at), site(rs_.rings[own_shell].first), witness_point);
         }
         for (const std::uint32_t s : odd) {
           if (s != own_shell && ring(s).part == info.part) {
             throw InvalidDomainError(Kind::nested_holes,
-                                     name(r) + " lies inside " + name(s) + " (" + vertex(at) + " is inside it)",
-                                     site(at), site(ring(s).first), rs_.v[at]);
+                                     name(r) + " lies inside " + name(s) + " (" + witness + " is inside it)",
+                                     site(at), site(ring(s).first), witness_point);
           }
         }
         continue;
@@ -509,8 +540,8 @@ class Validator {
           throw InvalidDomainError(Kind::overlapping_parts,
                                    "polygons " + std::to_string(ring(s).part) + " and " + std::to_string(info.part) +
                                        " overlap: " + name(r) + " lies inside polygon " +
-                                       std::to_string(ring(s).part) + " (" + vertex(at) + " is inside it)",
-                                   site(at), site(ring(s).first), rs_.v[at]);
+                                       std::to_string(ring(s).part) + " (" + witness + " is inside it)",
+                                   site(at), site(ring(s).first), witness_point);
         }
       }
     }
@@ -551,25 +582,73 @@ class Validator {
       }
       return x;
     };
-    std::uint32_t node = static_cast<std::uint32_t>(R);
+    std::vector<Point> point_of;  // touch point of node R + i
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> joined;  // (ring, node) links so far
+    auto node = static_cast<std::uint32_t>(R - 1);
     for (std::size_t i = 0; i < links.size(); ++i) {
-      if (i > 0 && (links[i].part != links[i - 1].part || links[i].p != links[i - 1].p)) {
+      if (i == 0 || links[i].part != links[i - 1].part || links[i].p != links[i - 1].p) {
         ++node;
+        point_of.push_back(links[i].p);
       }
       const std::uint32_t a = find(links[i].ring);
       const std::uint32_t b = find(node);
       if (a == b) {
-        const RingInfo& info = ring(links[i].ring);
-        throw InvalidDomainError(Kind::disconnected_interior,
-                                 "polygon " + std::to_string(links[i].part) +
-                                     ": the interior is disconnected: " + name(links[i].ring) + " touches at " +
-                                     format_point(links[i].p) +
-                                     " rings it is already joined to through other touch points, so the touching "
-                                     "rings close a loop that cuts the polygon in two",
-                                 Site{info.part, info.ring, {}}, {}, links[i].p);
+        throw_loop(links[i].part, links[i].ring, node, joined, point_of);
       }
       parent[a] = b;
+      joined.emplace_back(links[i].ring, node);
     }
+  }
+
+  // Reports the loop closed by linking `ring` to touch node `node`: the path between them
+  // through the links made so far, found breadth first.
+  [[noreturn]] void throw_loop(std::uint32_t part, std::uint32_t ring_id, std::uint32_t node,
+                               const std::vector<std::pair<std::uint32_t, std::uint32_t>>& joined,
+                               const std::vector<Point>& point_of) const {
+    const std::size_t R = rs_.rings.size();
+    std::vector<std::vector<std::uint32_t>> adj(R + point_of.size());
+    for (const auto& [r, n] : joined) {
+      adj[r].push_back(n);
+      adj[n].push_back(r);
+    }
+    std::vector<std::uint32_t> from(adj.size(), UINT32_MAX);
+    std::deque<std::uint32_t> queue{ring_id};
+    from[ring_id] = ring_id;
+    while (!queue.empty() && from[node] == UINT32_MAX) {
+      const std::uint32_t x = queue.front();
+      queue.pop_front();
+      for (const std::uint32_t y : adj[x]) {
+        if (from[y] == UINT32_MAX) {
+          from[y] = x;
+          queue.push_back(y);
+        }
+      }
+    }
+    // Walk back from the touch node to the ring: ring, point, ring, point, ...
+    const auto ring_label = [this](std::uint32_t r) {
+      return ring(r).ring == 0 ? std::string("the outer ring") : "hole " + std::to_string(ring(r).ring);
+    };
+    std::vector<std::string> rings{ring_label(ring_id)};
+    std::vector<std::string> points{format_point(point_of[node - R])};
+    for (std::uint32_t x = from[node]; x != ring_id && x != UINT32_MAX; x = from[x]) {
+      if (x < R) {
+        rings.push_back(ring_label(x));
+      } else {
+        points.push_back(format_point(point_of[x - R]));
+      }
+    }
+    const auto join = [](const std::vector<std::string>& items) {
+      std::string out;
+      for (std::size_t i = 0; i < items.size(); ++i) {
+        out += (i == 0 ? "" : (i + 1 == items.size() ? " and " : ", ")) + items[i];
+      }
+      return out;
+    };
+    const RingInfo& info = ring(ring_id);
+    throw InvalidDomainError(Kind::disconnected_interior,
+                             "polygon " + std::to_string(part) + ": the interior is disconnected: " + join(rings) +
+                                 " touch at " + join(points) + ", closing a loop that cuts the polygon in two",
+                             Site{info.part, info.ring, {}}, {}, point_of[node - R]);
   }
 
   const RingSet& rs_;

@@ -52,6 +52,9 @@ class Parser {
   explicit Parser(std::string_view text) : text_(text) {}
 
   std::vector<ParsedPolygon> parse() {
+    if (text_.substr(0, 3) == "\xEF\xBB\xBF") {
+      pos_ = 3;  // a UTF-8 byte order mark, as some editors write
+    }
     skip_space();
     const std::size_t start = pos_;
     const std::string_view word = read_word();
@@ -62,10 +65,20 @@ class Parser {
     if (keyword == "SRID" || (pos_ < text_.size() && text_[pos_] == '=')) {
       fail(WktError::Kind::syntax, "extended WKT (SRID=...;) is not supported; give the geometry only", start);
     }
+    for (const char* base : {"POLYGON", "MULTIPOLYGON"}) {
+      const std::string b(base);
+      if (keyword.size() > b.size() && keyword.compare(0, b.size(), b) == 0) {
+        const std::string dim = keyword.substr(b.size());
+        if (dim == "Z" || dim == "M" || dim == "ZM") {
+          fail(WktError::Kind::dimension,
+               dim + " coordinates are not supported: frontpack domains are 2D (x y)", start + b.size());
+        }
+      }
+    }
     std::vector<ParsedPolygon> polygons;
     if (keyword == "POLYGON") {
       reject_dimension();
-      polygons.push_back(parse_polygon_text("POLYGON"));
+      polygons.push_back(parse_polygon_text("POLYGON EMPTY"));
     } else if (keyword == "MULTIPOLYGON") {
       reject_dimension();
       parse_multipolygon_text(polygons);
@@ -118,7 +131,16 @@ class Parser {
       end = offset + 1;
     }
     std::string quoted(1, '\'');
-    quoted.append(text_.substr(offset, end - offset)).append(1, '\'');
+    for (const char c : text_.substr(offset, end - offset)) {
+      const auto u = static_cast<unsigned char>(c);
+      if (u < 0x20 || u >= 0x7f) {
+        static constexpr char hex[] = "0123456789ABCDEF";
+        quoted.append("\\x").append(1, hex[u >> 4]).append(1, hex[u & 15]);
+      } else {
+        quoted.push_back(c);
+      }
+    }
+    quoted.push_back('\'');
     return quoted;
   }
 
@@ -126,7 +148,7 @@ class Parser {
     return std::find(other_types.begin(), other_types.end(), keyword) != other_types.end();
   }
 
-  // "POLYGON Z (...)", "POLYGON M", "POLYGON ZM", and "POLYGONZ" variants.
+  // "POLYGON Z (...)", "POLYGON M", "POLYGON ZM" (the "POLYGONZ" spelling is caught in parse()).
   void reject_dimension() {
     skip_space();
     const std::size_t start = pos_;
@@ -178,8 +200,8 @@ class Parser {
 
   ParsedPolygon parse_polygon_text(const char* context) {
     if (peek_empty()) {
-      fail(WktError::Kind::empty_geometry, std::string(context) + " EMPTY: a domain must have positive area",
-           pos_ - 5);
+      fail(WktError::Kind::empty_geometry,
+           std::string(context) + ": a domain and each of its polygons must have positive area", pos_ - 5);
     }
     expect('(', "'(' to open a polygon");
     ParsedPolygon polygon;
@@ -195,7 +217,7 @@ class Parser {
     }
     expect('(', "'(' to open a multipolygon");
     do {
-      polygons.push_back(parse_polygon_text("polygon"));
+      polygons.push_back(parse_polygon_text("EMPTY polygon in a MULTIPOLYGON"));
     } while (comma_or_close("a multipolygon's list of polygons"));
   }
 
@@ -215,7 +237,9 @@ class Parser {
         const std::size_t at = pos_;
         if (is_digit(text_[pos_]) || text_[pos_] == '-' || text_[pos_] == '+' || text_[pos_] == '.') {
           fail(WktError::Kind::dimension,
-               "point with more than 2 coordinates: frontpack domains are 2D (x y), found " + describe_here(at), at);
+               "point with more than 2 coordinates (or a missing comma): frontpack domains are 2D (x y), found " +
+                   describe_here(at),
+               at);
         }
       }
       ring.points.push_back(Point{x, y});
@@ -279,6 +303,11 @@ class Parser {
     const std::size_t from = text_[start] == '+' ? start + 1 : start;
     double value = 0.0;
     const auto [end, ec] = std::from_chars(text_.data() + from, text_.data() + i, value);
+    if (ec == std::errc::result_out_of_range && decimal_order(text_.substr(start, i - start)) < 0) {
+      // Below half the smallest subnormal: the correctly rounded value is zero.
+      pos_ = i;
+      return text_[start] == '-' ? -0.0 : 0.0;
+    }
     if (ec == std::errc::result_out_of_range) {
       fail(WktError::Kind::bad_number,
            "number '" + std::string(text_.substr(start, i - start)) + "' is out of the range of a double", start);
@@ -288,6 +317,43 @@ class Parser {
     }
     pos_ = i;
     return value;
+  }
+
+  // The decimal order of magnitude of a well-formed number token (floor(log10 |x|), roughly):
+  // only its sign matters, to tell underflow from overflow.
+  static long decimal_order(std::string_view token) {
+    std::size_t i = 0;
+    if (i < token.size() && (token[i] == '+' || token[i] == '-')) {
+      ++i;
+    }
+    long order = 0;
+    bool seen_nonzero = false;
+    long int_digits = 0;
+    long leading_fraction_zeros = 0;
+    for (; i < token.size() && is_digit(token[i]); ++i) {
+      seen_nonzero = seen_nonzero || token[i] != '0';
+      int_digits += seen_nonzero ? 1 : 0;
+    }
+    if (i < token.size() && token[i] == '.') {
+      for (++i; i < token.size() && is_digit(token[i]); ++i) {
+        if (!seen_nonzero && token[i] == '0') {
+          ++leading_fraction_zeros;
+        }
+        seen_nonzero = seen_nonzero || token[i] != '0';
+      }
+    }
+    order = int_digits > 0 ? int_digits - 1 : -leading_fraction_zeros - 1;
+    if (i < token.size() && (token[i] == 'e' || token[i] == 'E')) {
+      long exponent = 0;
+      const char* first = token.data() + i + 1 + (token[i + 1] == '+' ? 1 : 0);
+      const auto [end, ec] = std::from_chars(first, token.data() + token.size(), exponent);
+      (void)end;
+      if (ec == std::errc::result_out_of_range) {
+        exponent = token[i + 1] == '-' ? -1000000 : 1000000;
+      }
+      order += exponent;
+    }
+    return order;
   }
 
   std::string_view text_;

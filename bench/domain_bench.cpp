@@ -1,0 +1,126 @@
+// Domain benchmarks: loading + validating large WKT polygons, and exact batch classification of
+// many disks against a many-edge domain. Run:
+//   build/release/bench/frontpack_bench_domain
+// Figures are recorded in docs/performance.md.
+#include <benchmark/benchmark.h>
+
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <numbers>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "frontpack/frontpack.hpp"
+
+namespace fp = frontpack;
+
+namespace {
+
+void append_point(std::string& out, fp::Point p) {
+  char buf[64];
+  const int n = std::snprintf(buf, sizeof buf, "%.17g %.17g", p.x, p.y);
+  out.append(buf, static_cast<std::size_t>(n));
+}
+
+void append_ring(std::string& out, const std::vector<fp::Point>& ring) {
+  out.push_back('(');
+  for (std::size_t k = 0; k <= ring.size(); ++k) {
+    if (k > 0) {
+      out.push_back(',');
+    }
+    append_point(out, ring[k % ring.size()]);
+  }
+  out.push_back(')');
+}
+
+// A star-shaped ring with n vertices (strictly increasing angles, so it is simple) whose radius
+// wiggles between 0.9 and 1.1, and `holes` small square holes on a circle of radius 0.5.
+// Deterministic: the wiggle comes from a fixed-seed generator's integers.
+std::string big_polygon_wkt(std::size_t n, std::size_t holes) {
+  std::mt19937_64 rng(2003);
+  std::vector<fp::Point> ring;
+  for (std::size_t k = 0; k < n; ++k) {
+    const double t = 2 * std::numbers::pi * static_cast<double>(k) / static_cast<double>(n);
+    const double r = 1.0 + 0.1 * std::sin(37 * t) + 0.001 * (static_cast<double>(rng() >> 11) * 0x1p-53 - 0.5);
+    ring.push_back({r * std::cos(t), r * std::sin(t)});
+  }
+  std::string wkt = "POLYGON(";
+  append_ring(wkt, ring);
+  for (std::size_t h = 0; h < holes; ++h) {
+    const double t = 2 * std::numbers::pi * static_cast<double>(h) / static_cast<double>(holes);
+    const double cx = 0.5 * std::cos(t);
+    const double cy = 0.5 * std::sin(t);
+    const double s = 0.02;
+    wkt.push_back(',');
+    append_ring(wkt, {{cx - s, cy - s}, {cx - s, cy + s}, {cx + s, cy + s}, {cx + s, cy - s}});
+  }
+  wkt.push_back(')');
+  return wkt;
+}
+
+// Disks of radius 5e-4..5e-3 on a jittered lattice over the domain's box (about n of them).
+std::vector<fp::Disk> disks_over(const fp::Box& box, std::size_t n) {
+  std::mt19937_64 rng(77);
+  const auto side = static_cast<std::size_t>(std::sqrt(static_cast<double>(n)));
+  std::vector<fp::Disk> disks;
+  disks.reserve(side * side);
+  for (std::size_t i = 0; i < side; ++i) {
+    for (std::size_t j = 0; j < side; ++j) {
+      const double u = (static_cast<double>(i) + 0.5) / static_cast<double>(side);
+      const double v = (static_cast<double>(j) + 0.5) / static_cast<double>(side);
+      const double r = 5e-4 + 4.5e-3 * (static_cast<double>(rng() >> 11) * 0x1p-53);
+      disks.push_back({{box.xmin + u * box.width(), box.ymin + v * box.height()}, r});
+    }
+  }
+  return disks;
+}
+
+void BM_LoadWkt(benchmark::State& state) {
+  const std::string wkt = big_polygon_wkt(static_cast<std::size_t>(state.range(0)), 16);
+  for (auto _ : state) {
+    fp::Domain d = fp::Domain::from_wkt(wkt);
+    benchmark::DoNotOptimize(d);
+  }
+  state.counters["vertices"] = static_cast<double>(state.range(0) + 16 * 4);
+  state.SetItemsProcessed(state.iterations() * state.range(0));
+}
+BENCHMARK(BM_LoadWkt)->Arg(10'000)->Arg(100'000)->Unit(benchmark::kMillisecond);
+
+void BM_ContainsBatch(benchmark::State& state) {
+  const fp::Domain d = fp::Domain::from_wkt(big_polygon_wkt(static_cast<std::size_t>(state.range(0)), 16));
+  const std::vector<fp::Disk> disks = disks_over(d.bbox(), static_cast<std::size_t>(state.range(1)));
+  std::vector<std::uint8_t> out(disks.size());
+  for (auto _ : state) {
+    d.contains(disks, out);
+    benchmark::DoNotOptimize(out.data());
+  }
+  std::size_t inside = 0;
+  for (const auto o : out) {
+    inside += o;
+  }
+  state.counters["edges"] = static_cast<double>(d.num_vertices());
+  state.counters["disks"] = static_cast<double>(disks.size());
+  state.counters["inside"] = static_cast<double>(inside);
+  state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(disks.size()));
+}
+BENCHMARK(BM_ContainsBatch)->Args({100'000, 1'000'000})->Args({1'000, 1'000'000})->Unit(benchmark::kMillisecond);
+
+void BM_Locate(benchmark::State& state) {
+  const fp::Domain d = fp::Domain::from_wkt(big_polygon_wkt(static_cast<std::size_t>(state.range(0)), 16));
+  const std::vector<fp::Disk> disks = disks_over(d.bbox(), 1'000'000);
+  for (auto _ : state) {
+    std::size_t inside = 0;
+    for (const fp::Disk& disk : disks) {
+      inside += d.locate(disk.centre) == fp::Location::inside ? 1U : 0U;
+    }
+    benchmark::DoNotOptimize(inside);
+  }
+  state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(disks.size()));
+}
+BENCHMARK(BM_Locate)->Arg(100'000)->Unit(benchmark::kMillisecond);
+
+}  // namespace
+
+BENCHMARK_MAIN();

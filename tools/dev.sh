@@ -1,0 +1,69 @@
+#!/usr/bin/env bash
+# frontpack developer entry point: installs what is missing, configures, builds, runs.
+#
+#   tools/dev.sh demo   install packages, build (Release), run the tool on a bundled shape
+#   tools/dev.sh test   install packages, build, run the whole test suite in Release and
+#                       under AddressSanitizer + UndefinedBehaviorSanitizer (what CI runs)
+#   tools/dev.sh build  install packages and build (Release) only
+#
+# Works on a fresh Debian bookworm machine as root (or with sudo), and again incrementally.
+set -euo pipefail
+cd "$(dirname "${BASH_SOURCE[0]}")/.."
+
+packages=(
+  g++ cmake ninja-build pkg-config
+  libcgal-dev libboost-dev libgmp-dev libmpfr-dev
+  libgtest-dev libgmock-dev libbenchmark-dev libcli11-dev
+)
+
+install_packages() {
+  local missing=()
+  for p in "${packages[@]}"; do
+    dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+  done
+  [ ${#missing[@]} -eq 0 ] && return 0
+  echo "==> installing Debian packages: ${missing[*]}"
+  local sudo=()
+  if [ "$(id -u)" != 0 ]; then
+    command -v sudo >/dev/null || { echo "error: need root (or sudo) to install: ${missing[*]}" >&2; exit 1; }
+    sudo=(sudo)
+  fi
+  "${sudo[@]}" env DEBIAN_FRONTEND=noninteractive apt-get update -q
+  "${sudo[@]}" env DEBIAN_FRONTEND=noninteractive apt-get install -y -q --no-install-recommends "${missing[@]}"
+}
+
+build() {  # $1 = preset
+  echo "==> configuring and building ($1)"
+  cmake --preset "$1" >/dev/null
+  cmake --build --preset "$1"
+}
+
+run_tests() {  # $1 = preset
+  echo "==> testing ($1)"
+  ctest --preset "$1"
+}
+
+case "${1:-}" in
+  demo)
+    install_packages
+    build release
+    shape="${2:-shapes/concave_polygon.wkt}"
+    echo "==> build/release/tools/frontpack info $shape"
+    build/release/tools/frontpack info "$shape"
+    ;;
+  build)
+    install_packages
+    build release
+    ;;
+  test)
+    install_packages
+    build asan
+    run_tests asan
+    build release
+    run_tests release
+    ;;
+  *)
+    sed -n '2,9p' "$0" | sed 's/^# \{0,1\}//'
+    exit 1
+    ;;
+esac
