@@ -1,5 +1,8 @@
 #include "exact.hpp"
 
+#include <cmath>
+#include <limits>
+
 namespace frontpack::detail {
 
 namespace {
@@ -58,10 +61,42 @@ CGAL::Comparison_result compare_distance_to_segment(Point c, Point a, Point b, d
 }
 
 CGAL::Comparison_result compare_centre_distance(Point c1, Point c2, double r1, double r2) {
+  // Semi-static filter. With u = 2^-53, the computed d2 = dx^2 + dy^2 has relative error at most
+  // 4u, s2 = (r1 + r2)^2 at most 3u, and their difference adds u: |error| <= 5u (d2 + s2), plus
+  // at most 16 subnormal units of absolute error if products underflow. Outside 8u (d2 + s2)
+  // the sign is certain; inside it, or on overflow, intervals and then exact arithmetic decide.
+  {
+    const double dx = c1.x - c2.x;
+    const double dy = c1.y - c2.y;
+    const double s = r1 + r2;
+    const double d2 = dx * dx + dy * dy;
+    const double s2 = s * s;
+    const double diff = d2 - s2;
+    const double size = d2 + s2;
+    if (std::isfinite(diff) && std::isfinite(size)) {
+      const double bound = 8 * 0x1p-53 * size + 16 * std::numeric_limits<double>::denorm_min();
+      if (diff > bound) {
+        return CGAL::LARGER;
+      }
+      if (diff < -bound) {
+        return CGAL::SMALLER;
+      }
+    }
+  }
   return filtered<CGAL::Comparison_result>([&](auto tag) {
     using NT = decltype(tag);
     return centre_distance(NT(c1.x), NT(c1.y), NT(c2.x), NT(c2.y), NT(r1), NT(r2));
   });
+}
+
+}  // namespace frontpack::detail
+
+#include "overlap.hpp"
+
+namespace frontpack::detail {
+
+bool disks_overlap_exact(Point c1, double r1, Point c2, double r2) {
+  return compare_centre_distance(c1, c2, r1, r2) == CGAL::SMALLER;
 }
 
 }  // namespace frontpack::detail

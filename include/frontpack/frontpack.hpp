@@ -4,5 +4,6 @@
 
 #include "frontpack/domain.hpp"
 #include "frontpack/errors.hpp"
+#include "frontpack/fill.hpp"
 #include "frontpack/geometry.hpp"
 #include "frontpack/version.hpp"

@@ -1,0 +1,171 @@
+// frontpack: filling a domain with disks (Feng, Han & Owen 2003), certified exactly.
+//
+//   const auto domain = frontpack::Domain::from_wkt_file("shapes/l_shape.wkt");
+//   frontpack::FillOptions options;
+//   options.radii = frontpack::Radii::uniform(0.01, 0.05);
+//   const frontpack::Packing packing = frontpack::fill(domain, options);
+//
+// Guarantee (for every accepted domain and options): no two disks of packing.disks overlap and
+// every disk lies in the closed domain, both decided exactly on the returned doubles by the
+// certifier (certify()), whose report is packing.certificate. Touching is allowed.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <span>
+#include <utility>
+#include <vector>
+
+#include "frontpack/domain.hpp"
+#include "frontpack/errors.hpp"
+#include "frontpack/geometry.hpp"
+
+namespace frontpack {
+
+/// Invalid fill options (a radius spec, a window, a limit). The message names the option.
+class OptionError : public Error {
+ public:
+  using Error::Error;
+};
+
+/// A request that would exceed FillOptions::max_disks; the message gives the estimate.
+class LimitError : public Error {
+ public:
+  LimitError(const std::string& message, std::size_t estimate) : Error(message), estimate_(estimate) {}
+  [[nodiscard]] std::size_t estimate() const noexcept { return estimate_; }
+
+ private:
+  std::size_t estimate_;
+};
+
+/// A radius distribution. Radii are drawn by inverse transform from a 53-bit uniform variate of
+/// frontpack's own generator, so a seed gives the same radii on every compiler and platform.
+/// This is the seam through which further distributions plug in.
+class RadiusDistribution {
+ public:
+  virtual ~RadiusDistribution() = default;
+  /// The radius at cumulative probability u in [0, 1). Must be monotone in u and within
+  /// [min(), max()].
+  [[nodiscard]] virtual double quantile(double u) const = 0;
+  [[nodiscard]] virtual double min() const = 0;
+  [[nodiscard]] virtual double max() const = 0;
+  /// E[r^2], for estimating disk counts.
+  [[nodiscard]] virtual double mean_square() const = 0;
+};
+
+/// A radius specification (a value type sharing an immutable distribution).
+class Radii {
+ public:
+  /// Radii uniform in [rmin, rmax] (the paper's); 0 < rmin <= rmax, finite. Throws OptionError.
+  [[nodiscard]] static Radii uniform(double rmin, double rmax);
+  /// Every radius equal to r > 0. Throws OptionError.
+  [[nodiscard]] static Radii constant(double r);
+  /// Any distribution (must satisfy RadiusDistribution's contract; its bounds are checked).
+  [[nodiscard]] static Radii custom(std::shared_ptr<const RadiusDistribution> distribution);
+
+  [[nodiscard]] const RadiusDistribution& distribution() const;
+  [[nodiscard]] double min() const { return distribution().min(); }
+  [[nodiscard]] double max() const { return distribution().max(); }
+
+ private:
+  std::shared_ptr<const RadiusDistribution> d_;
+};
+
+enum class Method : std::uint8_t {
+  closed,  ///< Sec. 2: grows from three mutually tangent disks at the centre
+  open,    ///< Sec. 3: layer by layer from the bottom wall, walls as disks of infinite radius
+};
+
+[[nodiscard]] const char* to_string(Method method) noexcept;
+
+struct FillOptions {
+  Method method = Method::closed;
+  Radii radii = Radii::uniform(0.01, 0.1);
+  std::uint64_t seed = 0;
+  /// Front check window M (Sec. 2.4.3): how many front disks are examined before and after the
+  /// active segment to decide cases (b)-(d); 0 means the whole front. Overlaps with any other
+  /// disk are still found (by a grid over all placed disks) and never emitted.
+  std::size_t window = 5;
+  /// Closed form: where the first three disks are placed (default: the centre of each
+  /// polygon's bounding box).
+  std::optional<Point> start;
+  /// Tangent disks are placed at centre distance r1 + r2 + clearance. 0 (the default) means
+  /// automatic: 64 * 2^-52 * (largest |coordinate| + 5 rmax), a few ulps of the coordinates, so
+  /// that rounding never makes tangent disks overlap (docs/robustness.md); about 1.4e-14 for a
+  /// unit domain. A value you give must be at least 16 * 2^-52 * (largest |coordinate| + 5 rmax)
+  /// (else OptionError); give the same value to make two runs comparable (e.g. translated domains).
+  double clearance = 0;
+  /// Refuse requests whose estimated disk count exceeds this (LimitError), and stop a run that
+  /// reaches it (Packing::truncated).
+  std::size_t max_disks = 50'000'000;
+};
+
+/// Progress of a run, reported through Generator::on_progress.
+struct Progress {
+  std::size_t disks = 0;            ///< generated so far
+  double fraction = 0.0;            ///< estimated fraction of the work done, in [0, 1]
+};
+
+/// The certifier's report.
+struct Certificate {
+  std::size_t generated = 0;  ///< disks produced by the generator
+  std::size_t culled = 0;     ///< removed because not entirely inside the domain (exact)
+  std::size_t dropped = 0;    ///< removed by the global overlap pass (0 for frontpack's generator)
+  std::size_t candidate_pairs = 0;  ///< pairs whose boxes met, each decided exactly
+  bool exact = true;          ///< every containment and every pair was decided exactly
+};
+
+/// Counters of the advancing front (what the algorithm did, for diagnostics).
+struct FillStats {
+  std::size_t attempts = 0;          ///< tangent positions computed
+  std::size_t cuts = 0;              ///< cases (b)-(d)
+  std::size_t blocked_segments = 0;  ///< segments retired because a disk off the window overlapped
+  std::size_t exact_checks = 0;      ///< overlap tests close enough to need the exact predicate
+  double seconds_front = 0;          ///< wall time of the advancing front (generation)
+  double seconds_cull = 0;           ///< wall time of the exact containment pass
+  double seconds_overlap = 0;        ///< wall time of the global overlap pass
+};
+
+struct Packing {
+  std::vector<Disk> disks;  ///< certified: pairwise non-overlapping, all inside the domain
+  Certificate certificate;
+  FillStats stats;
+  bool truncated = false;   ///< max_disks was reached
+  bool cancelled = false;   ///< the progress callback asked to stop
+};
+
+/// Fills the domain. Throws OptionError, LimitError.
+[[nodiscard]] Packing fill(const Domain& domain, const FillOptions& options);
+
+/// A fill with control: a progress callback (return false to cancel).
+class Generator {
+ public:
+  Generator(Domain domain, FillOptions options);
+  /// Called about every 1% of the work (and at the end); returning false cancels the run, which
+  /// then returns the certified packing of what was generated so far, with cancelled = true.
+  void on_progress(std::function<bool(const Progress&)> callback);
+  [[nodiscard]] Packing run();
+
+ private:
+  Domain domain_;
+  FillOptions options_;
+  std::function<bool(const Progress&)> progress_;
+};
+
+/// What certify() found about an arbitrary set of disks.
+struct CertifyReport {
+  Certificate certificate;
+  std::vector<std::size_t> outside;                            ///< indices of disks not inside
+  std::vector<std::pair<std::size_t, std::size_t>> overlapping;  ///< index pairs (i < j), sorted
+};
+
+/// Certifies any set of disks against a domain, exactly: which disks are not inside the closed
+/// domain, and which pairs overlap (interiors intersect; touching is fine). Disks with a
+/// negative, NaN or infinite radius or centre are "outside". Pairs among outside disks are
+/// reported too.
+[[nodiscard]] CertifyReport certify(const Domain& domain, std::span<const Disk> disks);
+
+}  // namespace frontpack

@@ -1,0 +1,144 @@
+// fill(): the advancing front over each polygon's bounding box (Sec. 2.4.5), then certification:
+// exact culling against the domain and the global overlap pass.
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <string>
+
+#include "certify.hpp"
+#include "format.hpp"
+#include "front.hpp"
+#include "frontpack/fill.hpp"
+#include "rng.hpp"
+
+namespace frontpack {
+
+namespace {
+
+// The clearance: a few ulps of the largest coordinate any disk centre can have (the domain's,
+// plus the margin by which generated disks overhang the filled box), so that neither the
+// floating-point tangency nor the rounding of the output (box corner + local position) can make
+// tangent disks overlap. docs/robustness.md, "Clearance".
+double clearance_for(const Domain& domain, const FillOptions& o) {
+  const double scale = domain.max_abs_coordinate() + 5 * o.radii.max();
+  const double minimum = 16 * 0x1p-52 * scale;
+  if (o.clearance == 0) {
+    return 4 * minimum;
+  }
+  if (!std::isfinite(o.clearance) || o.clearance < minimum) {
+    throw OptionError("clearance must be 0 (automatic) or a finite number >= " + detail::format_double(minimum) +
+                      " for this domain and radius range, got " + detail::format_double(o.clearance));
+  }
+  return o.clearance;
+}
+
+void check_options(const FillOptions& o) {
+  (void)o.radii.distribution();  // throws if empty
+  if (o.start && (!std::isfinite(o.start->x) || !std::isfinite(o.start->y))) {
+    throw OptionError("start point must be finite");
+  }
+}
+
+double seconds_since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+Packing run_fill(const Domain& domain, const FillOptions& options, const std::function<bool(const Progress&)>& progress) {
+  check_options(options);
+  const RadiusDistribution& radii = options.radii.distribution();
+  const double clearance = clearance_for(domain, options);
+  double estimate = 0;
+  for (std::size_t p = 0; p < domain.num_polygons(); ++p) {
+    estimate += detail::estimate_disks(domain.bbox(p), radii);
+  }
+  if (estimate > static_cast<double>(options.max_disks)) {
+    throw LimitError("the request would generate about " + std::to_string(static_cast<std::size_t>(estimate)) +
+                         " disks, more than max_disks = " + std::to_string(options.max_disks) +
+                         "; use larger radii or raise max_disks",
+                     static_cast<std::size_t>(estimate));
+  }
+
+  Packing packing;
+  auto t0 = std::chrono::steady_clock::now();
+  std::vector<Disk> raw;
+  raw.reserve(static_cast<std::size_t>(estimate * 1.2) + 64);
+  detail::Rng rng(options.seed);
+  for (std::size_t p = 0; p < domain.num_polygons() && !packing.truncated && !packing.cancelled; ++p) {
+    detail::FrontRequest req;
+    req.box = domain.bbox(p);
+    req.method = options.method;
+    req.radii = &radii;
+    req.window = options.window;
+    if (options.start && domain.num_polygons() == 1) {
+      req.start = options.start;
+    }
+    req.clearance = clearance;
+    req.max_disks = options.max_disks;
+    if (progress) {
+      const std::size_t before = raw.size();
+      req.tick = [&, before](std::size_t total) {
+        (void)before;
+        return progress(Progress{total, std::min(0.99, static_cast<double>(total) / std::max(estimate, 1.0))});
+      };
+    }
+    const detail::FrontResult result = detail::advance_front(req, rng, raw, packing.stats);
+    packing.truncated = packing.truncated || result.truncated;
+    packing.cancelled = packing.cancelled || result.cancelled;
+  }
+
+  packing.stats.seconds_front = seconds_since(t0);
+  t0 = std::chrono::steady_clock::now();
+
+  // Certification. Sec. 2.4.5: disks not entirely inside the domain are culled (exactly).
+  std::vector<std::uint8_t> inside(raw.size());
+  domain.contains(raw, inside);
+  std::vector<Disk> kept;
+  kept.reserve(raw.size());
+  for (std::size_t i = 0; i < raw.size(); ++i) {
+    if (inside[i] != 0) {
+      kept.push_back(raw[i]);
+    }
+  }
+  packing.certificate.generated = raw.size();
+  packing.certificate.culled = raw.size() - kept.size();
+  std::vector<std::uint8_t>().swap(inside);
+  std::vector<Disk>().swap(raw);
+  packing.stats.seconds_cull = seconds_since(t0);
+  t0 = std::chrono::steady_clock::now();
+
+  // Sec. 2.4.3's final global search: drop one disk of every overlapping pair (the later one,
+  // in the order of the sorted pairs: deterministic). Our generator never produces one.
+  std::vector<std::pair<std::size_t, std::size_t>> pairs;
+  detail::overlapping_pairs(kept, pairs, packing.certificate.candidate_pairs);
+  std::vector<std::uint8_t> drop(kept.size(), 0);
+  for (const auto& [i, j] : pairs) {
+    if (drop[i] == 0 && drop[j] == 0) {
+      drop[j] = 1;
+      ++packing.certificate.dropped;
+    }
+  }
+  packing.disks.reserve(kept.size() - packing.certificate.dropped);
+  for (std::size_t i = 0; i < kept.size(); ++i) {
+    if (drop[i] == 0) {
+      packing.disks.push_back(kept[i]);
+    }
+  }
+  packing.certificate.exact = true;
+  packing.stats.seconds_overlap = seconds_since(t0);
+  if (progress) {
+    (void)progress(Progress{packing.certificate.generated, 1.0});
+  }
+  return packing;
+}
+
+}  // namespace
+
+Packing fill(const Domain& domain, const FillOptions& options) { return run_fill(domain, options, {}); }
+
+Generator::Generator(Domain domain, FillOptions options) : domain_(std::move(domain)), options_(std::move(options)) {}
+
+void Generator::on_progress(std::function<bool(const Progress&)> callback) { progress_ = std::move(callback); }
+
+Packing Generator::run() { return run_fill(domain_, options_, progress_); }
+
+}  // namespace frontpack

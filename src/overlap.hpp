@@ -1,0 +1,12 @@
+// CGAL-free declarations of the exact disk predicates, for the advancing-front hot loop (whose
+// translation unit must not include CGAL). Defined in exact.cpp.
+#pragma once
+
+#include "frontpack/geometry.hpp"
+
+namespace frontpack::detail {
+
+/// Exact: the interiors of the two disks intersect (|c1 - c2| < r1 + r2).
+[[nodiscard]] bool disks_overlap_exact(Point c1, double r1, Point c2, double r2);
+
+}  // namespace frontpack::detail

@@ -1,0 +1,314 @@
+// The advancing front and its certificate: exact non-overlap and containment on every shape,
+// checked again by an independent brute force; the hexagonal lattice for equal radii;
+// determinism; termination on hostile requests; translation invariance.
+#include <gtest/gtest.h>
+
+#include <CGAL/Gmpq.h>
+
+#include <algorithm>
+#include <cstring>
+#include <cmath>
+#include <cstdint>
+#include <numbers>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include "frontpack/frontpack.hpp"
+#include "test_support.hpp"
+
+namespace fp = frontpack;
+
+namespace {
+
+// Independent exact pair predicate (rationals, no filter): the interiors intersect.
+bool overlap_exact(const fp::Disk& a, const fp::Disk& b) {
+  const CGAL::Gmpq dx = CGAL::Gmpq(a.centre.x) - CGAL::Gmpq(b.centre.x);
+  const CGAL::Gmpq dy = CGAL::Gmpq(a.centre.y) - CGAL::Gmpq(b.centre.y);
+  const CGAL::Gmpq s = CGAL::Gmpq(a.radius) + CGAL::Gmpq(b.radius);
+  return dx * dx + dy * dy < s * s;
+}
+
+// Brute force over all pairs whose boxes meet, via a hash grid (the test's own index).
+std::size_t brute_force_overlaps(const std::vector<fp::Disk>& disks, std::size_t limit) {
+  if (disks.empty()) {
+    return 0;
+  }
+  double rmax = 0;
+  for (const auto& d : disks) {
+    rmax = std::max(rmax, d.radius);
+  }
+  const double h = 2 * rmax;
+  std::unordered_map<std::int64_t, std::vector<std::size_t>> cells;
+  const auto key = [h](double x, double y) {
+    return (static_cast<std::int64_t>(std::floor(x / h)) << 32) ^ (static_cast<std::int64_t>(std::floor(y / h)) & 0xffffffff);
+  };
+  for (std::size_t i = 0; i < disks.size(); ++i) {
+    cells[key(disks[i].centre.x, disks[i].centre.y)].push_back(i);
+  }
+  std::size_t found = 0;
+  for (std::size_t i = 0; i < std::min(limit, disks.size()); ++i) {
+    const fp::Disk& a = disks[i];
+    for (int dx = -1; dx <= 1; ++dx) {
+      for (int dy = -1; dy <= 1; ++dy) {
+        const auto it = cells.find(key(a.centre.x + dx * h, a.centre.y + dy * h));
+        if (it == cells.end()) {
+          continue;
+        }
+        for (const std::size_t j : it->second) {
+          if (j > i && overlap_exact(a, disks[j])) {
+            ++found;
+          }
+        }
+      }
+    }
+  }
+  return found;
+}
+
+fp::Packing fill(const fp::Domain& d, fp::Method m, fp::Radii radii, std::uint64_t seed, double clearance = 0) {
+  fp::FillOptions o;
+  o.clearance = clearance;
+  o.method = m;
+  o.radii = std::move(radii);
+  o.seed = seed;
+  return fp::fill(d, o);
+}
+
+double covered_fraction(const fp::Domain& d, const std::vector<fp::Disk>& disks) {
+  double a = 0;
+  for (const auto& k : disks) {
+    a += std::numbers::pi * k.radius * k.radius;
+  }
+  return a / d.area();
+}
+
+}  // namespace
+
+// Every shape x both forms x 3 seeds, radii [r, 10r] sized for 1k-50k disks.
+class FillShapes : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(FillShapes, CertifiedOnBothFormsAndThreeSeeds) {
+  const fp::Domain d = fp::Domain::from_wkt_file(fp::test::shapes_dir() / GetParam());
+  // Size r so that about 4000 disks of mean area fit the bounding box of the largest part.
+  const fp::Box b = d.bbox();
+  const double r = std::sqrt(b.width() * b.height() / (4000 * std::numbers::pi * 37.0)) ;  // E[r^2] = 37 r^2 for [r, 10r]
+  for (const fp::Method m : {fp::Method::closed, fp::Method::open}) {
+    for (const std::uint64_t seed : {1ULL, 2ULL, 0xfeedULL}) {
+      SCOPED_TRACE(std::string(fp::to_string(m)) + " seed " + std::to_string(seed));
+      const fp::Packing p = fill(d, m, fp::Radii::uniform(r, 10 * r), seed);
+      EXPECT_GE(p.disks.size(), 300U);
+      EXPECT_LE(p.disks.size(), 50000U);
+      EXPECT_EQ(p.certificate.dropped, 0U) << "the generator itself produced an overlap";
+      EXPECT_TRUE(p.certificate.exact);
+      EXPECT_EQ(p.certificate.generated, p.disks.size() + p.certificate.culled);
+      // The certifier, run again on the result: nothing outside, no overlapping pair.
+      const fp::CertifyReport again = fp::certify(d, p.disks);
+      EXPECT_TRUE(again.outside.empty());
+      EXPECT_TRUE(again.overlapping.empty());
+      // And an independent brute force (exact rationals) on a subset of the disks.
+      EXPECT_EQ(brute_force_overlaps(p.disks, 2000), 0U);
+      for (std::size_t i = 0; i < p.disks.size(); i += 7) {
+        ASSERT_TRUE(d.contains(p.disks[i]));
+      }
+      EXPECT_GT(covered_fraction(d, p.disks), 0.45);
+    }
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Shapes, FillShapes,
+                         ::testing::Values("unit_square.wkt", "convex_polygon.wkt", "concave_polygon.wkt",
+                                           "l_shape.wkt", "plate_with_holes.wkt", "annulus.wkt", "islands.wkt",
+                                           "gear.wkt", "narrow_channel.wkt", "comb.wkt", "big_polygon.wkt",
+                                           "offset_1e6.wkt", "millimetre.wkt", "hole_touching.wkt"),
+                         [](const auto& param_info) {
+                           std::string name = param_info.param;
+                           return name.substr(0, name.find('.'));
+                         });
+
+TEST(FillShapes, CorpusCoversEveryShape) { EXPECT_EQ(fp::test::shape_files().size(), 14U); }
+
+// The certifier must find what is there: a planted overlap and a planted outside disk.
+TEST(Certify, FindsPlantedDefects) {
+  const fp::Domain d = fp::Domain::from_wkt("POLYGON((0 0,10 0,10 10,0 10,0 0))");
+  std::vector<fp::Disk> disks = {{{2, 2}, 1}, {{4, 2}, 1}, {{5.9, 2}, 1}, {{9.5, 5}, 1}, {{5, 5}, 1}};
+  // 0-1 touch exactly (fine); 1-2 overlap; 3 pokes out of x = 10.
+  const fp::CertifyReport r = fp::certify(d, disks);
+  ASSERT_EQ(r.overlapping.size(), 1U);
+  EXPECT_EQ(r.overlapping[0], (std::pair<std::size_t, std::size_t>{1, 2}));
+  ASSERT_EQ(r.outside.size(), 1U);
+  EXPECT_EQ(r.outside[0], 3U);
+  // One ulp apart is decided exactly both ways.
+  const double x = std::nextafter(4.0, 0.0);
+  const fp::CertifyReport ulp = fp::certify(d, std::vector<fp::Disk>{{{2, 2}, 1}, {{x, 2}, 1}});
+  EXPECT_EQ(ulp.overlapping.size(), 1U);
+}
+
+TEST(Fill, EqualRadiiClosedFormIsHexagonal) {
+  // Paper Fig. 9(a): equal disks give the hexagonal lattice. 1 x 1 with r = 0.004: ~18,000 disks.
+  const double r = 0.004;
+  const fp::Domain d = fp::Domain::from_wkt("POLYGON((0 0,1 0,1 1,0 1,0 0))");
+  const fp::Packing p = fill(d, fp::Method::closed, fp::Radii::constant(r), 5);
+  ASSERT_GE(p.disks.size(), 10000U);
+  EXPECT_EQ(p.stats.blocked_segments, 0U);
+  // Interior disks: farther than 4r from the boundary. Contact: centre distance <= 2r (1 + 1e-9).
+  const double contact = 2 * r * (1 + 1e-9);
+  std::unordered_map<std::int64_t, std::vector<std::size_t>> cells;
+  const double h = 2.5 * r;
+  const auto key = [h](double x, double y) {
+    return (static_cast<std::int64_t>(std::floor(x / h)) << 32) ^ static_cast<std::int64_t>(std::floor(y / h));
+  };
+  for (std::size_t i = 0; i < p.disks.size(); ++i) {
+    cells[key(p.disks[i].centre.x, p.disks[i].centre.y)].push_back(i);
+  }
+  std::size_t interior = 0;
+  for (std::size_t i = 0; i < p.disks.size(); ++i) {
+    const fp::Point c = p.disks[i].centre;
+    if (c.x < 4 * r || c.x > 1 - 4 * r || c.y < 4 * r || c.y > 1 - 4 * r) {
+      continue;
+    }
+    ++interior;
+    int neighbours = 0;
+    for (int dx = -1; dx <= 1; ++dx) {
+      for (int dy = -1; dy <= 1; ++dy) {
+        const auto it = cells.find(key(c.x + dx * h, c.y + dy * h));
+        if (it == cells.end()) {
+          continue;
+        }
+        for (const std::size_t j : it->second) {
+          if (j != i && std::hypot(p.disks[j].centre.x - c.x, p.disks[j].centre.y - c.y) <= contact) {
+            ++neighbours;
+          }
+        }
+      }
+    }
+    ASSERT_EQ(neighbours, 6) << "disk " << i << " at " << c.x << " " << c.y;
+  }
+  EXPECT_GT(interior, 8000U);
+  // Interior packing fraction: the exact disk area inside the window [8r, 1 - 8r]^2 (disks cut
+  // by the window integrated numerically), over the window's area.
+  const double lo = 8 * r;
+  const double hi = 1 - 8 * r;
+  double covered = 0;
+  for (const fp::Disk& k : p.disks) {
+    const fp::Point c = k.centre;
+    if (c.x - r >= lo && c.x + r <= hi && c.y - r >= lo && c.y + r <= hi) {
+      covered += std::numbers::pi * r * r;
+    } else if (c.x + r > lo && c.x - r < hi && c.y + r > lo && c.y - r < hi) {
+      constexpr int steps = 2000;  // midpoint rule on the vertical chords
+      const double x0 = std::max(c.x - r, lo);
+      const double x1 = std::min(c.x + r, hi);
+      const double dxs = (x1 - x0) / steps;
+      for (int s = 0; s < steps; ++s) {
+        const double x = x0 + (s + 0.5) * dxs;
+        const double half = std::sqrt(std::max(0.0, r * r - (x - c.x) * (x - c.x)));
+        covered += std::max(0.0, std::min(c.y + half, hi) - std::max(c.y - half, lo)) * dxs;
+      }
+    }
+  }
+  const double phi = covered / ((hi - lo) * (hi - lo));
+  EXPECT_NEAR(phi, std::numbers::pi / std::sqrt(12.0), 1e-3);
+}
+
+TEST(Fill, SameSeedIsBitIdenticalAndAnotherSeedDiffers) {
+  const fp::Domain d = fp::Domain::from_wkt_file(fp::test::shapes_dir() / "concave_polygon.wkt");
+  for (const fp::Method m : {fp::Method::closed, fp::Method::open}) {
+    const fp::Packing a = fill(d, m, fp::Radii::uniform(0.005, 0.02), 42);
+    const fp::Packing b = fill(d, m, fp::Radii::uniform(0.005, 0.02), 42);
+    const fp::Packing c = fill(d, m, fp::Radii::uniform(0.005, 0.02), 43);
+    ASSERT_EQ(a.disks.size(), b.disks.size());
+    for (std::size_t i = 0; i < a.disks.size(); ++i) {
+      ASSERT_EQ(std::memcmp(&a.disks[i], &b.disks[i], sizeof(fp::Disk)), 0) << i;
+    }
+    EXPECT_NE(a.disks, c.disks);
+  }
+}
+
+TEST(Fill, TranslationByAnExactOffsetTranslatesThePacking) {
+  // The front works in coordinates local to each box's corner, so a domain translated by an
+  // exactly representable offset runs the very same computation (given the same clearance: the
+  // automatic one grows with the coordinates); only the final addition of the corner rounds
+  // differently, by at most an ulp of the output.
+  const fp::Domain d = fp::Domain::from_wkt_file(fp::test::shapes_dir() / "l_shape.wkt");
+  const double offset = 1024;
+  std::vector<fp::Polygon> moved = d.polygons();
+  for (fp::Polygon& p : moved) {
+    for (fp::Point& v : p.outer) {
+      v = {v.x + offset, v.y - offset};
+      ASSERT_EQ(v.x - offset + offset, v.x);  // exact
+    }
+  }
+  const fp::Domain t = fp::Domain::from_polygons(moved);
+  for (const fp::Method m : {fp::Method::closed, fp::Method::open}) {
+    SCOPED_TRACE(fp::to_string(m));
+    const fp::Packing a = fill(d, m, fp::Radii::uniform(0.01, 0.05), 7, 1e-10);
+    const fp::Packing b = fill(t, m, fp::Radii::uniform(0.01, 0.05), 7, 1e-10);
+    ASSERT_EQ(a.certificate.generated, b.certificate.generated);
+    ASSERT_EQ(a.disks.size(), b.disks.size());
+    for (std::size_t i = 0; i < a.disks.size(); ++i) {
+      EXPECT_EQ(a.disks[i].radius, b.disks[i].radius);
+      const double ulp = std::nextafter(std::abs(b.disks[i].centre.x), INFINITY) - std::abs(b.disks[i].centre.x);
+      EXPECT_LE(std::abs(a.disks[i].centre.x + offset - b.disks[i].centre.x), 2 * ulp) << i;
+      EXPECT_LE(std::abs(a.disks[i].centre.y - offset - b.disks[i].centre.y), 2 * ulp) << i;
+    }
+  }
+}
+
+TEST(Fill, TerminatesOnHostileRadii) {
+  const fp::Domain square = fp::Domain::from_wkt("POLYGON((0 0,1 0,1 1,0 1,0 0))");
+  const fp::Domain channel = fp::Domain::from_wkt("POLYGON((0 0,10 0,10 0.01,0 0.01,0 0))");
+  for (const fp::Method m : {fp::Method::closed, fp::Method::open}) {
+    SCOPED_TRACE(fp::to_string(m));
+    // rmax larger than the domain: empty or a few disks.
+    EXPECT_LE(fill(square, m, fp::Radii::uniform(2, 3), 1).disks.size(), 1U);
+    EXPECT_LE(fill(square, m, fp::Radii::uniform(0.3, 5), 1).disks.size(), 4U);
+    // A domain narrower than 2 rmin: an empty result, not an error.
+    EXPECT_EQ(fill(channel, m, fp::Radii::uniform(0.01, 0.02), 1).disks.size(), 0U);
+    // rmax / rmin = 100.
+    const fp::Packing wide = fill(square, m, fp::Radii::uniform(0.001, 0.1), 1);
+    EXPECT_EQ(wide.certificate.dropped, 0U);
+    EXPECT_GT(wide.disks.size(), 40U);  // E[r^2] = 0.0034: about 80 disks fit
+  }
+}
+
+TEST(Fill, OptionsAreChecked) {
+  EXPECT_THROW((void)fp::Radii::uniform(0.2, 0.1), fp::OptionError);
+  EXPECT_THROW((void)fp::Radii::uniform(0, 0.1), fp::OptionError);
+  EXPECT_THROW((void)fp::Radii::uniform(-1, 0.1), fp::OptionError);
+  EXPECT_THROW((void)fp::Radii::uniform(NAN, 0.1), fp::OptionError);
+  EXPECT_THROW((void)fp::Radii::constant(INFINITY), fp::OptionError);
+  const fp::Domain d = fp::Domain::from_wkt("POLYGON((0 0,1 0,1 1,0 1,0 0))");
+  fp::FillOptions o;
+  o.radii = fp::Radii::constant(1e-4);
+  o.max_disks = 1000;
+  o.clearance = 1e-20;  // below the safe minimum for a unit domain
+  EXPECT_THROW((void)fp::fill(d, o), fp::OptionError);
+  o.clearance = 0;
+  try {
+    (void)fp::fill(d, o);
+    FAIL() << "no LimitError";
+  } catch (const fp::LimitError& e) {
+    EXPECT_GT(e.estimate(), 10000U);
+    EXPECT_NE(std::string(e.what()).find("max_disks"), std::string::npos);
+  }
+}
+
+TEST(Fill, ProgressAndCancellation) {
+  const fp::Domain d = fp::Domain::from_wkt("POLYGON((0 0,1 0,1 1,0 1,0 0))");
+  fp::FillOptions o;
+  o.radii = fp::Radii::uniform(0.001, 0.002);
+  fp::Generator g(d, o);
+  std::size_t calls = 0;
+  g.on_progress([&](const fp::Progress& p) {
+    ++calls;
+    EXPECT_GE(p.fraction, 0.0);
+    EXPECT_LE(p.fraction, 1.0);
+    return p.disks < 40000;
+  });
+  const fp::Packing p = g.run();
+  EXPECT_TRUE(p.cancelled);
+  EXPECT_GT(calls, 1U);
+  EXPECT_LT(p.certificate.generated, 60000U);
+  EXPECT_EQ(p.certificate.dropped, 0U);
+  EXPECT_TRUE(fp::certify(d, p.disks).overlapping.empty());
+}
