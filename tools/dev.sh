@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # frontpack developer entry point: installs what is missing, configures, builds, runs.
 #
-#   tools/dev.sh demo   install packages, build (Release), run the tool on a bundled shape
+#   tools/dev.sh demo   install packages, build (Release), fill a bundled shape (CSV + SVG in build/)
 #   tools/dev.sh test   install packages, build, run the whole test suite in Release and
 #                       under AddressSanitizer + UndefinedBehaviorSanitizer (what CI runs)
 #   tools/dev.sh build  install packages and build (Release) only
@@ -48,8 +48,9 @@ case "${1:-}" in
     install_packages
     build release
     shape="${2:-shapes/concave_polygon.wkt}"
-    echo "==> build/release/tools/frontpack info $shape"
     build/release/tools/frontpack info "$shape"
+    echo "==> build/release/tools/frontpack fill $shape --radius uniform:0.004,0.02 -o build/demo.csv -o build/demo.svg"
+    build/release/tools/frontpack fill "$shape" --radius uniform:0.004,0.02 -o build/demo.csv -o build/demo.svg
     ;;
   build)
     install_packages

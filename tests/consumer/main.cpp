@@ -4,9 +4,11 @@
 
 int main(int argc, char** argv) try {
   const auto domain = frontpack::Domain::from_wkt_file(argc > 1 ? argv[1] : "shapes/concave_polygon.wkt");
-  const frontpack::Disk disk{{0.25, 0.25}, 0.1};
-  std::cout << "area " << domain.area() << ", disk inside: " << domain.contains(disk)
-            << ", (0 0) is " << frontpack::to_string(domain.locate({0, 0})) << "\n";
+  frontpack::FillOptions options;
+  options.radii = frontpack::Radii::uniform(0.005, 0.02);
+  const frontpack::Packing packing = frontpack::fill(domain, options);
+  std::cout << packing.disks.size() << " disks, area " << domain.area() << ", "
+            << packing.certificate.dropped << " overlaps\n";
 } catch (const frontpack::Error& e) {
   std::cerr << e.what() << "\n";
   return 1;

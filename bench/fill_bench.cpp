@@ -1,0 +1,85 @@
+// Fill benchmarks (issue #3): radii uniform in [5e-4, 5e-3] in a 6 x 6 square (~1M disks),
+// one thread. Run each alone so that the peak-memory counter means something:
+//   build/release/bench/frontpack_bench_fill --benchmark_filter=Core
+//   build/release/bench/frontpack_bench_fill --benchmark_filter=Pipeline/1
+//   build/release/bench/frontpack_bench_fill --benchmark_filter=Pipeline/10
+// "Core" times the advancing front alone (FillStats::seconds_front, manual time); "Pipeline"
+// times fill() end to end: generation + exact cull + CGAL overlap pass.
+#include <benchmark/benchmark.h>
+#include <sys/resource.h>
+
+#include <cmath>
+#include <numbers>
+#include <string>
+
+#include "frontpack/frontpack.hpp"
+
+namespace fp = frontpack;
+
+namespace {
+
+// A square of side 6 * sqrt(scale): scale = 10 gives ten times the area (~10M disks).
+fp::Domain square(double scale) {
+  const double s = 6 * std::sqrt(scale);
+  const std::string side = std::to_string(s);
+  return fp::Domain::from_wkt("POLYGON((0 0," + side + " 0," + side + " " + side + ",0 " + side + ",0 0))");
+}
+
+fp::FillOptions options(fp::Method m) {
+  fp::FillOptions o;
+  o.method = m;
+  o.radii = fp::Radii::uniform(5e-4, 5e-3);
+  o.seed = 2003;
+  return o;
+}
+
+double fraction(const fp::Packing& p, const fp::Domain& d) {
+  double a = 0;
+  for (const fp::Disk& k : p.disks) {
+    a += std::numbers::pi * k.radius * k.radius;
+  }
+  return a / d.area();
+}
+
+void report(benchmark::State& state, const fp::Packing& p, const fp::Domain& d) {
+  rusage ru{};
+  getrusage(RUSAGE_SELF, &ru);
+  state.counters["disks"] = static_cast<double>(p.disks.size());
+  state.counters["fraction"] = fraction(p, d);
+  state.counters["dropped"] = static_cast<double>(p.certificate.dropped);
+  state.counters["front_s"] = p.stats.seconds_front;
+  state.counters["cull_s"] = p.stats.seconds_cull;
+  state.counters["overlap_s"] = p.stats.seconds_overlap;
+  state.counters["peak_bytes_per_disk"] = static_cast<double>(ru.ru_maxrss) * 1024.0 / static_cast<double>(p.disks.size());
+}
+
+void BM_Core(benchmark::State& state) {
+  const auto method = static_cast<fp::Method>(state.range(0));
+  const fp::Domain d = square(1);
+  fp::Packing p;
+  for (auto _ : state) {
+    p = fp::fill(d, options(method));
+    state.SetIterationTime(p.stats.seconds_front);
+  }
+  report(state, p, d);
+  state.SetLabel(fp::to_string(method));
+}
+BENCHMARK(BM_Core)->Arg(static_cast<int>(fp::Method::open))->Arg(static_cast<int>(fp::Method::closed))
+    ->UseManualTime()->Unit(benchmark::kMillisecond)->Iterations(3);
+
+void BM_Pipeline(benchmark::State& state) {
+  const fp::Domain d = square(static_cast<double>(state.range(0)));
+  const auto method = static_cast<fp::Method>(state.range(1));
+  fp::Packing p;
+  for (auto _ : state) {
+    p = fp::fill(d, options(method));
+  }
+  report(state, p, d);
+  state.SetLabel(fp::to_string(method));
+}
+BENCHMARK(BM_Pipeline)->Args({1, static_cast<int>(fp::Method::open)})->Args({1, static_cast<int>(fp::Method::closed)})
+    ->Args({10, static_cast<int>(fp::Method::open)})->Unit(benchmark::kMillisecond)->Iterations(1);
+
+}  // namespace
+
+BENCHMARK_MAIN();
