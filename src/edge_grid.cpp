@@ -77,16 +77,24 @@ void EdgeGrid::rasterize(std::uint32_t edge, F&& emit) const {
     return;
   }
   // The edge spans several columns. Over the exact x-range of column i (both ends are doubles),
-  // the edge's y lies between its values at the two ends; we evaluate them in floating point and
-  // widen by `margin`, far above the rounding error (< 8 eps (|a.y| + |b.y|)), so that the rows
-  // are a superset of the exact ones. Clamping to the edge's own exact y-range keeps it tight.
-  const double slope = (b.y - a.y) / (b.x - a.x);
+  // the edge's y lies between its values at the two ends. We evaluate them in floating point as
+  // y = a.y + t (b.y - a.y) with t = (x - a.x) / (b.x - a.x) in [0, 1] -- never a slope, which
+  // overflows for steep edges (dx subnormal, or 1e-300 against 1e9) -- and widen by `margin`,
+  // far above the rounding error (< 8 eps (|a.y| + |b.y|): the subtractions are exact when they
+  // underflow, t carries 2 roundings, the product and the sum one each), so that the rows are a
+  // superset of the exact ones. Clamping to the edge's own exact y-range keeps it tight.
+  const double dx = b.x - a.x;
+  const double dy = b.y - a.y;
   const double margin = 1e-14 * (std::abs(a.y) + std::abs(b.y)) + std::numeric_limits<double>::min();
+  const auto y_at = [&](double x) {
+    const double t = std::clamp((x - a.x) / dx, 0.0, 1.0);
+    return a.y + t * dy;
+  };
   for (std::size_t i = i0; i <= i1; ++i) {
     const double xa = std::max(xs_[i], xlo);
     const double xb = std::min(xs_[i + 1], xhi);
-    const double ya = a.y + (xa - a.x) * slope;
-    const double yb = a.y + (xb - a.x) * slope;
+    const double ya = y_at(xa);
+    const double yb = y_at(xb);
     const double lo = std::max(std::min(ya, yb) - margin, ylo);
     const double hi = std::min(std::max(ya, yb) + margin, yhi);
     for (std::size_t j = row(lo), j1 = row(hi); j <= j1; ++j) {

@@ -64,7 +64,6 @@ class Front {
     prev_.reserve(reserve + kFirstDisk);
     on_front_.reserve(reserve + kFirstDisk);
     blocked_.reserve(reserve + kFirstDisk);
-    mark_.reserve(reserve + kFirstDisk);
     setup_grid();
   }
 
@@ -136,7 +135,6 @@ class Front {
     prev_.push_back(kNone);
     on_front_.push_back(0);
     blocked_.push_back(0);
-    mark_.push_back(0);
     return id;
   }
 
@@ -199,13 +197,34 @@ class Front {
     return disks_overlap_exact({x, y}, r, {o.x, o.y}, o.r);
   }
 
-  // Marks every placed disk and front wall that a disk at (x, y, r) would overlap, except the
-  // nodes c and n it is tangent to. Returns whether there was any.
-  bool mark_overlaps(double x, double y, double r, std::int32_t c, std::int32_t n) {
-    ++stamp_;
-    bool any = false;
-    // Only the cells that the box of possible overlaps spans: a disk d overlapping this one has
-    // |x - x_d| < r + r_d <= r + rmax; the reach is padded so rounding cannot lose a cell.
+  // Whether a disk at (x, y, r) crosses wall w (open form). A disk within the band of a wall
+  // counts as crossing it: walls only guide the generator; containment in the domain is decided
+  // exactly by the certifier.
+  [[nodiscard]] bool crosses_wall(std::int32_t w, double x, double y, double r) const noexcept {
+    switch (w) {
+      case kLeft: return x - r < box_.xmin + band_;
+      case kRight: return x + r > box_.xmax - band_;
+      default: return y - r < box_.ymin + band_;
+    }
+  }
+
+  // Whether a disk at (x, y, r) overlaps front node v (a disk or a wall).
+  bool overlaps_node(double x, double y, double r, std::int32_t v) {
+    return is_wall(v) ? open_ && crosses_wall(v, x, y, r) : overlaps(x, y, r, nodes_[static_cast<std::size_t>(v)]);
+  }
+
+  // Whether a disk at (x, y, r) overlaps any placed disk or any wall, other than c and n. The
+  // grid scan covers only the cells that the box of possible overlaps spans: a disk d
+  // overlapping this one has |x - x_d| < r + r_d <= r + rmax; the reach is padded so that
+  // rounding cannot lose a cell. Walls are obstacles whether or not they are on the front.
+  bool overlaps_anything(double x, double y, double r, std::int32_t c, std::int32_t n) {
+    if (open_) {
+      for (const std::int32_t w : {kLeft, kBottom, kRight}) {
+        if (w != c && w != n && crosses_wall(w, x, y, r)) {
+          return true;
+        }
+      }
+    }
     const double reach = (r + rmax_) * (1 + 1e-9);
     const std::int64_t c0 = col(x - reach);
     const std::int64_t c1 = col(x + reach);
@@ -216,31 +235,13 @@ class Front {
         for (std::int32_t d = head_[static_cast<std::size_t>(j) * gnx_ + static_cast<std::size_t>(i)]; d != kNone;) {
           const Node& o = nodes_[static_cast<std::size_t>(d)];
           if (d != c && d != n && overlaps(x, y, r, o)) {
-            mark_[static_cast<std::size_t>(d)] = stamp_;
-            any = true;
+            return true;
           }
           d = o.cell_next;
         }
       }
     }
-    if (open_) {
-      // Walls are obstacles always; on the front they take part in cases (b)-(d) like disks,
-      // off it (the bottom wall after the first layer) like an enclosed disk. A disk within the
-      // band of a wall counts as crossing it (walls only guide the generator: containment in
-      // the domain is decided exactly by the certifier).
-      const auto wall = [&](std::int32_t w, bool crosses) {
-        if (w != c && w != n && crosses) {
-          any = true;
-          if (on_front_[static_cast<std::size_t>(w)]) {
-            mark_[static_cast<std::size_t>(w)] = stamp_;
-          }
-        }
-      };
-      wall(kLeft, x - r < box_.xmin + band_);
-      wall(kRight, x + r > box_.xmax - band_);
-      wall(kBottom, y - r < box_.ymin + band_);
-    }
-    return any;
+    return false;
   }
 
   // ------------------------------------------------------------------------------------------
@@ -406,18 +407,8 @@ class Front {
         cur_after_failure_ = c;
         return kNone;
       }
-      if (!mark_overlaps(px, py, r, c, n)) {
-        // Case (a): accept; the front becomes ... c -> i -> n ...
-        const std::int32_t i = add_node(px, py, r);
-        on_front_[static_cast<std::size_t>(i)] = 1;
-        ++front_size_;
-        unlink_segment(c);
-        link(c, i);
-        link(i, n);
-        return i;
-      }
-      // Which overlapped front disk comes first after n (subsequent, j) and before c
-      // (preceding, u), within the window M and (closed form) half a turn about O.
+      // Which front disk overlapping the new one comes first after n (subsequent, j) and
+      // before c (preceding, u), within the window M and (closed form) half a turn about O.
       std::int32_t j = kNone;
       std::int32_t u = kNone;
       const bool can_forward = !(open_ && n == kRight);
@@ -437,7 +428,7 @@ class Front {
               break;
             }
           }
-          if (mark_[static_cast<std::size_t>(v)] == stamp_) {
+          if (overlaps_node(px, py, r, v)) {
             j = v;
             break;
           }
@@ -457,7 +448,7 @@ class Front {
               break;
             }
           }
-          if (mark_[static_cast<std::size_t>(v)] == stamp_) {
+          if (overlaps_node(px, py, r, v)) {
             u = v;
             break;
           }
@@ -468,6 +459,16 @@ class Front {
         }
       }
       if (j == kNone && u == kNone) {
+        if (!overlaps_anything(px, py, r, c, n)) {
+          // Case (a): accept; the front becomes ... c -> i -> n ...
+          const std::int32_t i = add_node(px, py, r);
+          on_front_[static_cast<std::size_t>(i)] = 1;
+          ++front_size_;
+          unlink_segment(c);
+          link(c, i);
+          link(i, n);
+          return i;
+        }
         // Every overlapped disk is off the window or enclosed by the front: the paper's window
         // check would have missed it. Retire the segment rather than emit an overlap.
         block(c);
@@ -559,8 +560,6 @@ class Front {
   std::vector<Node> nodes_;
   std::vector<std::int32_t> next_, prev_;
   std::vector<std::uint8_t> on_front_, blocked_;
-  std::vector<std::uint32_t> mark_;
-  std::uint32_t stamp_ = 0;
   std::size_t active_ = 0;
   std::size_t front_size_ = 0;
   std::int32_t cur_after_failure_ = kNone;
