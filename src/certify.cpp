@@ -9,6 +9,7 @@
 
 #include "certify.hpp"
 #include "exact.hpp"
+#include "float_bits.hpp"
 #include "frontpack/fill.hpp"
 
 namespace frontpack {
@@ -26,8 +27,10 @@ void box_pass(std::span<const Disk> disks, std::vector<std::pair<std::size_t, st
   using Box = CGAL::Box_intersection_d::Box_with_handle_d<NT, 2, const Disk*,
                                                            CGAL::Box_intersection_d::ID_FROM_HANDLE>;
   constexpr NT inf = std::numeric_limits<NT>::infinity();
-  const auto down = [](double v) { return std::nextafter(static_cast<NT>(std::nextafter(v, -HUGE_VAL)), -inf); };
-  const auto up = [](double v) { return std::nextafter(static_cast<NT>(std::nextafter(v, HUGE_VAL)), inf); };
+  // One step below the rounded difference is below the exact one; converting to float rounds to
+  // nearest, so one more float step down keeps it below.
+  const auto down = [](double v) { return std::nextafter(static_cast<NT>(next_down(v)), -inf); };
+  const auto up = [](double v) { return std::nextafter(static_cast<NT>(next_up(v)), inf); };
   std::vector<Box> boxes;
   boxes.reserve(disks.size());
   for (const Disk& d : disks) {

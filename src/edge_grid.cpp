@@ -5,13 +5,12 @@
 #include <limits>
 
 #include "exact.hpp"
+#include "float_bits.hpp"
 
 namespace frontpack::detail {
 
 namespace {
 
-double next_down(double v) noexcept { return std::nextafter(v, -std::numeric_limits<double>::infinity()); }
-double next_up(double v) noexcept { return std::nextafter(v, std::numeric_limits<double>::infinity()); }
 
 // Boundaries lo = b[0] < b[1] < ... < b[n] with b[n] > hi, about `n` equal steps. The step is kept
 // at least 64 ulps of the coordinates, so the boundaries are strictly increasing.
