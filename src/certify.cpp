@@ -18,13 +18,15 @@ namespace detail {
 
 namespace {
 
-// Runs CGAL::box_self_intersection_d over boxes of number type NT (float halves the memory and
-// speeds the sweep; used when every coordinate fits a float), each rounded outwards so that the
-// exact box [x - r, x + r] x [y - r, y + r] lies inside it.
+// Runs CGAL::box_self_intersection_d over the disks listed in `batch` (the first `own` are one
+// strip's, the rest guests from the next strip), with boxes of number type NT (float halves the
+// memory and speeds the sweep; used when every coordinate fits a float), each rounded outwards so
+// that the exact box [x - r, x + r] x [y - r, y + r] lies inside it. A box's handle points at its
+// batch entry: the entry gives the disk, its position whether the disk is a guest.
 template <class NT>
-void box_pass(std::span<const Disk> disks, std::vector<std::pair<std::size_t, std::size_t>>& out,
-              std::size_t& candidates) {
-  using Box = CGAL::Box_intersection_d::Box_with_handle_d<NT, 2, const Disk*,
+void box_pass(std::span<const Disk> disks, const std::vector<std::uint32_t>& batch, std::size_t own,
+              std::vector<std::pair<std::size_t, std::size_t>>& out, std::size_t& candidates) {
+  using Box = CGAL::Box_intersection_d::Box_with_handle_d<NT, 2, const std::uint32_t*,
                                                            CGAL::Box_intersection_d::ID_FROM_HANDLE>;
   constexpr NT inf = std::numeric_limits<NT>::infinity();
   // One step below the rounded difference is below the exact one; converting to float rounds to
@@ -32,29 +34,26 @@ void box_pass(std::span<const Disk> disks, std::vector<std::pair<std::size_t, st
   const auto down = [](double v) { return std::nextafter(static_cast<NT>(next_down(v)), -inf); };
   const auto up = [](double v) { return std::nextafter(static_cast<NT>(next_up(v)), inf); };
   std::vector<Box> boxes;
-  boxes.reserve(disks.size());
-  for (const Disk& d : disks) {
-    const double x = d.centre.x;
-    const double y = d.centre.y;
-    const double r = d.radius;
-    if (!std::isfinite(x) || !std::isfinite(y) || !std::isfinite(r) || !(r >= 0)) {
-      continue;
-    }
-    NT lo[2] = {down(x - r), down(y - r)};
-    NT hi[2] = {up(x + r), up(y + r)};
-    boxes.emplace_back(lo, hi, &d);
+  boxes.reserve(batch.size());
+  for (const std::uint32_t& i : batch) {
+    const Disk& d = disks[i];
+    NT lo[2] = {down(d.centre.x - d.radius), down(d.centre.y - d.radius)};
+    NT hi[2] = {up(d.centre.x + d.radius), up(d.centre.y + d.radius)};
+    boxes.emplace_back(lo, hi, &i);
   }
-  const Disk* base = disks.data();
-  // A cutoff of 4000 measured fastest on ~1M disks in generation order (docs/performance.md).
+  const std::uint32_t* guests = batch.data() + own;
+  // A cutoff of 4000 measured fastest for this use (docs/design-notes.md).
   CGAL::box_self_intersection_d(
       boxes.begin(), boxes.end(),
       [&](const Box& a, const Box& b) {
+        if (a.handle() >= guests && b.handle() >= guests) {
+          return;  // both from the next strip: its own pass decides them
+        }
         ++candidates;
-        const Disk& p = *a.handle();
-        const Disk& q = *b.handle();
-        if (compare_centre_distance(p.centre, q.centre, p.radius, q.radius) == CGAL::SMALLER) {
-          const auto i = static_cast<std::size_t>(a.handle() - base);
-          const auto j = static_cast<std::size_t>(b.handle() - base);
+        const std::size_t i = *a.handle();
+        const std::size_t j = *b.handle();
+        if (compare_centre_distance(disks[i].centre, disks[j].centre, disks[i].radius, disks[j].radius) ==
+            CGAL::SMALLER) {
           out.emplace_back(std::min(i, j), std::max(i, j));
         }
       },
@@ -67,14 +66,115 @@ void overlapping_pairs(std::span<const Disk> disks, std::vector<std::pair<std::s
                        std::size_t& candidates) {
   out.clear();
   candidates = 0;
+  // Square-ish tiles at least 2 rmax wide and high (rmax: the largest radius), so that
+  // overlapping disks have their centres in the same or neighbouring tiles. Each tile is searched
+  // with guests from half of its neighbours -- right, upper left, up, upper right -- so that every
+  // pair of neighbouring tiles is searched once; a guest joins if its box meets the box of the
+  // tile's own disks, and pairs of two guests are left to their own tiles. Each CGAL run sees
+  // about kChunk disks: linear time overall, and box memory for one tile at a time. (Thin strips
+  // instead of tiles measured slower: CGAL's sweep prefers square batches.)
+  constexpr std::size_t kChunk = 1 << 18;
+  Box all;
+  double rmax = 0;
   bool fits_float = true;
+  std::size_t live = 0;
+  const auto takes_part = [](const Disk& d) {
+    return std::isfinite(d.centre.x) && std::isfinite(d.centre.y) && std::isfinite(d.radius) && d.radius >= 0;
+  };
   for (const Disk& d : disks) {
+    if (!takes_part(d)) {
+      continue;
+    }
+    ++live;
+    all.extend(d.centre);
+    rmax = std::max(rmax, d.radius);
     fits_float = fits_float && std::abs(d.centre.x) + d.radius < 1e30 && std::abs(d.centre.y) + d.radius < 1e30;
   }
-  if (fits_float) {
-    box_pass<float>(disks, out, candidates);
-  } else {
-    box_pass<double>(disks, out, candidates);
+  if (live == 0) {
+    return;
+  }
+  const double wanted = std::max(1.0, static_cast<double>(live) / kChunk);
+  const double W = all.width();
+  const double H = all.height();
+  const double min_side = 2.0 * rmax * (1 + 1e-9);
+  double side = std::sqrt(W * H / wanted);
+  if (!(side > min_side) || !std::isfinite(side)) {
+    side = std::max(min_side, std::max(W, H) / wanted);
+  }
+  if (!(side > 0) || !std::isfinite(side)) {
+    side = 1;  // all centres coincide and every radius is 0
+  }
+  const auto tiles_along = [side](double extent) {
+    return static_cast<std::size_t>(std::min(1e6, std::floor(extent / side))) + 1;
+  };
+  const std::size_t tx = tiles_along(W);
+  const std::size_t ty = tiles_along(H);
+  const auto tile_of = [&](const Disk& d) {
+    const auto i = std::min(tx - 1, static_cast<std::size_t>(std::max(0.0, (d.centre.x - all.xmin) / side)));
+    const auto j = std::min(ty - 1, static_cast<std::size_t>(std::max(0.0, (d.centre.y - all.ymin) / side)));
+    return j * tx + i;
+  };
+  // Counting sort of the disks by tile (stable: keeps generation order within a tile).
+  std::vector<std::uint32_t> start(tx * ty + 1, 0);
+  for (const Disk& d : disks) {
+    if (takes_part(d)) {
+      ++start[tile_of(d) + 1];
+    }
+  }
+  for (std::size_t t = 0; t < tx * ty; ++t) {
+    start[t + 1] += start[t];
+  }
+  std::vector<std::uint32_t> order(live);
+  {
+    std::vector<std::uint32_t> fill(start.begin(), start.end() - 1);
+    for (std::size_t i = 0; i < disks.size(); ++i) {
+      if (takes_part(disks[i])) {
+        order[fill[tile_of(disks[i])]++] = static_cast<std::uint32_t>(i);
+      }
+    }
+  }
+  std::vector<std::uint32_t> batch;
+  for (std::size_t j = 0; j < ty; ++j) {
+    for (std::size_t i = 0; i < tx; ++i) {
+      const std::size_t t = j * tx + i;
+      batch.assign(order.begin() + start[t], order.begin() + start[t + 1]);
+      const std::size_t own = batch.size();
+      if (own == 0) {
+        continue;
+      }
+      Box extent;  // of the own disks' boxes
+      for (const std::uint32_t k : batch) {
+        const Disk& d = disks[k];
+        extent.extend(Point{d.centre.x - d.radius, d.centre.y - d.radius});
+        extent.extend(Point{d.centre.x + d.radius, d.centre.y + d.radius});
+      }
+      const double slack = 0x1p-50 * (std::abs(extent.xmin) + std::abs(extent.xmax) + std::abs(extent.ymin) +
+                                      std::abs(extent.ymax));
+      const auto guest_tile = [&](std::ptrdiff_t di, std::ptrdiff_t dj) {
+        const std::ptrdiff_t gi = static_cast<std::ptrdiff_t>(i) + di;
+        const std::ptrdiff_t gj = static_cast<std::ptrdiff_t>(j) + dj;
+        if (gi < 0 || gj < 0 || gi >= static_cast<std::ptrdiff_t>(tx) || gj >= static_cast<std::ptrdiff_t>(ty)) {
+          return;
+        }
+        const std::size_t g = static_cast<std::size_t>(gj) * tx + static_cast<std::size_t>(gi);
+        for (std::size_t m = start[g]; m < start[g + 1]; ++m) {
+          const Disk& d = disks[order[m]];
+          if (d.centre.x - d.radius <= extent.xmax + slack && d.centre.x + d.radius >= extent.xmin - slack &&
+              d.centre.y - d.radius <= extent.ymax + slack && d.centre.y + d.radius >= extent.ymin - slack) {
+            batch.push_back(order[m]);
+          }
+        }
+      };
+      guest_tile(1, 0);
+      guest_tile(-1, 1);
+      guest_tile(0, 1);
+      guest_tile(1, 1);
+      if (fits_float) {
+        box_pass<float>(disks, batch, own, out, candidates);
+      } else {
+        box_pass<double>(disks, batch, own, out, candidates);
+      }
+    }
   }
   std::sort(out.begin(), out.end());
 }

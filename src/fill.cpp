@@ -90,39 +90,45 @@ Packing run_fill(const Domain& domain, const FillOptions& options, const std::fu
   t0 = std::chrono::steady_clock::now();
 
   // Certification. Sec. 2.4.5: disks not entirely inside the domain are culled (exactly).
-  std::vector<std::uint8_t> inside(raw.size());
-  domain.contains(raw, inside);
-  std::vector<Disk> kept;
-  kept.reserve(raw.size());
-  for (std::size_t i = 0; i < raw.size(); ++i) {
-    if (inside[i] != 0) {
-      kept.push_back(raw[i]);
-    }
-  }
+  // Compacted in place: no second copy of the disks.
   packing.certificate.generated = raw.size();
-  packing.certificate.culled = raw.size() - kept.size();
-  std::vector<std::uint8_t>().swap(inside);
-  std::vector<Disk>().swap(raw);
+  {
+    std::vector<std::uint8_t> inside(raw.size());
+    domain.contains(raw, inside);
+    std::size_t kept = 0;
+    for (std::size_t i = 0; i < raw.size(); ++i) {
+      if (inside[i] != 0) {
+        raw[kept++] = raw[i];
+      }
+    }
+    raw.resize(kept);
+  }
+  packing.certificate.culled = packing.certificate.generated - raw.size();
   packing.stats.seconds_cull = seconds_since(t0);
   t0 = std::chrono::steady_clock::now();
 
   // Sec. 2.4.3's final global search: drop one disk of every overlapping pair (the later one,
   // in the order of the sorted pairs: deterministic). Our generator never produces one.
   std::vector<std::pair<std::size_t, std::size_t>> pairs;
-  detail::overlapping_pairs(kept, pairs, packing.certificate.candidate_pairs);
-  std::vector<std::uint8_t> drop(kept.size(), 0);
-  for (const auto& [i, j] : pairs) {
-    if (drop[i] == 0 && drop[j] == 0) {
-      drop[j] = 1;
-      ++packing.certificate.dropped;
+  detail::overlapping_pairs(raw, pairs, packing.certificate.candidate_pairs);
+  if (!pairs.empty()) {
+    std::vector<std::uint8_t> drop(raw.size(), 0);
+    for (const auto& [i, j] : pairs) {
+      if (drop[i] == 0 && drop[j] == 0) {
+        drop[j] = 1;
+        ++packing.certificate.dropped;
+      }
     }
-  }
-  packing.disks.reserve(kept.size() - packing.certificate.dropped);
-  for (std::size_t i = 0; i < kept.size(); ++i) {
-    if (drop[i] == 0) {
-      packing.disks.push_back(kept[i]);
+    std::size_t kept = 0;
+    for (std::size_t i = 0; i < raw.size(); ++i) {
+      if (drop[i] == 0) {
+        raw[kept++] = raw[i];
+      }
     }
+    raw.resize(kept);
   }
+  raw.shrink_to_fit();
+  packing.disks = std::move(raw);
   packing.certificate.exact = true;
   packing.stats.seconds_overlap = seconds_since(t0);
   if (progress) {

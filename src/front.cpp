@@ -110,6 +110,12 @@ class Front {
       const std::int32_t n = next_[static_cast<std::size_t>(placed_node)];
       cur = open_ ? (n == kRight ? kLeft : placed_node) : n;
     }
+    // The front and the grid are done with: free them before the output grows (peak memory).
+    release(next_);
+    release(prev_);
+    release(on_front_);
+    release(blocked_);
+    release(head_);
     for (std::size_t i = kFirstDisk; i < nodes_.size(); ++i) {
       out_.push_back(Disk{{origin_.x + nodes_[i].x, origin_.y + nodes_[i].y}, nodes_[i].r});
     }
@@ -117,6 +123,11 @@ class Front {
   }
 
  private:
+  template <class T>
+  static void release(std::vector<T>& v) {
+    std::vector<T>().swap(v);
+  }
+
   // ------------------------------------------------------------------------------------------
   // Nodes, the grid over placed disks.
 
