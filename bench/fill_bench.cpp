@@ -50,7 +50,8 @@ void report(benchmark::State& state, const fp::Packing& p, const fp::Domain& d) 
   state.counters["front_s"] = p.stats.seconds_front;
   state.counters["cull_s"] = p.stats.seconds_cull;
   state.counters["overlap_s"] = p.stats.seconds_overlap;
-  state.counters["peak_bytes_per_disk"] = static_cast<double>(ru.ru_maxrss) * 1024.0 / static_cast<double>(p.disks.size());
+  state.counters["peak_bytes_per_disk"] =
+      static_cast<double>(ru.ru_maxrss) * 1024.0 / static_cast<double>(p.disks.size());
 }
 
 void BM_Core(benchmark::State& state) {
@@ -64,8 +65,12 @@ void BM_Core(benchmark::State& state) {
   report(state, p, d);
   state.SetLabel(fp::to_string(method));
 }
-BENCHMARK(BM_Core)->Arg(static_cast<int>(fp::Method::open))->Arg(static_cast<int>(fp::Method::closed))
-    ->UseManualTime()->Unit(benchmark::kMillisecond)->Iterations(3);
+BENCHMARK(BM_Core)
+    ->Arg(static_cast<int>(fp::Method::open))
+    ->Arg(static_cast<int>(fp::Method::closed))
+    ->UseManualTime()
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(3);
 
 void BM_Pipeline(benchmark::State& state) {
   const fp::Domain d = square(static_cast<double>(state.range(0)));
@@ -77,8 +82,12 @@ void BM_Pipeline(benchmark::State& state) {
   report(state, p, d);
   state.SetLabel(fp::to_string(method));
 }
-BENCHMARK(BM_Pipeline)->Args({1, static_cast<int>(fp::Method::open)})->Args({1, static_cast<int>(fp::Method::closed)})
-    ->Args({10, static_cast<int>(fp::Method::open)})->Unit(benchmark::kMillisecond)->Iterations(1);
+BENCHMARK(BM_Pipeline)
+    ->Args({1, static_cast<int>(fp::Method::open)})
+    ->Args({1, static_cast<int>(fp::Method::closed)})
+    ->Args({10, static_cast<int>(fp::Method::open)})
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(1);
 
 }  // namespace
 

@@ -27,7 +27,7 @@ template <class NT>
 void box_pass(std::span<const Disk> disks, const std::vector<std::uint32_t>& batch, std::size_t own,
               std::vector<std::pair<std::size_t, std::size_t>>& out, std::size_t& candidates) {
   using Box = CGAL::Box_intersection_d::Box_with_handle_d<NT, 2, const std::uint32_t*,
-                                                           CGAL::Box_intersection_d::ID_FROM_HANDLE>;
+                                                          CGAL::Box_intersection_d::ID_FROM_HANDLE>;
   constexpr NT inf = std::numeric_limits<NT>::infinity();
   // One step below the rounded difference is below the exact one; converting to float rounds to
   // nearest, so one more float step down keeps it below.
@@ -148,8 +148,8 @@ void overlapping_pairs(std::span<const Disk> disks, std::vector<std::pair<std::s
         extent.extend(Point{d.centre.x - d.radius, d.centre.y - d.radius});
         extent.extend(Point{d.centre.x + d.radius, d.centre.y + d.radius});
       }
-      const double slack = 0x1p-50 * (std::abs(extent.xmin) + std::abs(extent.xmax) + std::abs(extent.ymin) +
-                                      std::abs(extent.ymax));
+      const double slack =
+          0x1p-50 * (std::abs(extent.xmin) + std::abs(extent.xmax) + std::abs(extent.ymin) + std::abs(extent.ymax));
       const auto guest_tile = [&](std::ptrdiff_t di, std::ptrdiff_t dj) {
         const std::ptrdiff_t gi = static_cast<std::ptrdiff_t>(i) + di;
         const std::ptrdiff_t gj = static_cast<std::ptrdiff_t>(j) + dj;

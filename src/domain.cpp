@@ -159,14 +159,30 @@ Domain Domain::from_rings(Ring outer, std::vector<Ring> holes) {
   return from_polygons(std::move(polygons));
 }
 
-const std::vector<Polygon>& Domain::polygons() const noexcept { return impl_->polygons; }
-std::size_t Domain::num_polygons() const noexcept { return impl_->polygons.size(); }
-std::size_t Domain::num_holes() const noexcept { return impl_->holes; }
-std::size_t Domain::num_vertices() const noexcept { return impl_->rings.v.size(); }
-double Domain::area() const noexcept { return impl_->area; }
-double Domain::perimeter() const noexcept { return impl_->perimeter; }
-Box Domain::bbox() const noexcept { return impl_->rings.bbox; }
-double Domain::max_abs_coordinate() const noexcept { return impl_->max_abs; }
+const std::vector<Polygon>& Domain::polygons() const noexcept {
+  return impl_->polygons;
+}
+std::size_t Domain::num_polygons() const noexcept {
+  return impl_->polygons.size();
+}
+std::size_t Domain::num_holes() const noexcept {
+  return impl_->holes;
+}
+std::size_t Domain::num_vertices() const noexcept {
+  return impl_->rings.v.size();
+}
+double Domain::area() const noexcept {
+  return impl_->area;
+}
+double Domain::perimeter() const noexcept {
+  return impl_->perimeter;
+}
+Box Domain::bbox() const noexcept {
+  return impl_->rings.bbox;
+}
+double Domain::max_abs_coordinate() const noexcept {
+  return impl_->max_abs;
+}
 
 Box Domain::bbox(std::size_t polygon) const {
   if (polygon >= impl_->polygon_boxes.size()) {
@@ -175,9 +191,13 @@ Box Domain::bbox(std::size_t polygon) const {
   return impl_->polygon_boxes[polygon];
 }
 
-Location Domain::locate(Point p) const noexcept { return impl_->grid.locate(p); }
+Location Domain::locate(Point p) const noexcept {
+  return impl_->grid.locate(p);
+}
 
-bool Domain::contains(const Disk& disk) const noexcept { return impl_->grid.contains(disk); }
+bool Domain::contains(const Disk& disk) const noexcept {
+  return impl_->grid.contains(disk);
+}
 
 void Domain::contains(std::span<const Disk> disks, std::span<std::uint8_t> out) const {
   if (disks.size() != out.size()) {

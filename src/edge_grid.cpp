@@ -11,7 +11,6 @@ namespace frontpack::detail {
 
 namespace {
 
-
 // Boundaries lo = b[0] < b[1] < ... < b[n] with b[n] > hi, about `n` equal steps. The step is kept
 // at least 64 ulps of the coordinates, so the boundaries are strictly increasing.
 std::vector<double> boundaries(double lo, double hi, std::size_t n) {
@@ -56,8 +55,12 @@ std::size_t locate_interval(const std::vector<double>& b, double inv_step, doubl
 
 }  // namespace
 
-std::size_t EdgeGrid::column(double x) const noexcept { return locate_interval(xs_, inv_w_, x); }
-std::size_t EdgeGrid::row(double y) const noexcept { return locate_interval(ys_, inv_h_, y); }
+std::size_t EdgeGrid::column(double x) const noexcept {
+  return locate_interval(xs_, inv_w_, x);
+}
+std::size_t EdgeGrid::row(double y) const noexcept {
+  return locate_interval(ys_, inv_h_, y);
+}
 
 template <class F>
 void EdgeGrid::rasterize(std::uint32_t edge, F&& emit) const {

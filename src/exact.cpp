@@ -8,9 +8,8 @@ namespace frontpack::detail {
 namespace {
 
 template <class NT>
-CGAL::Uncertain<CGAL::Comparison_result> distance_to_segment(const NT& cx, const NT& cy, const NT& ax,
-                                                             const NT& ay, const NT& bx, const NT& by,
-                                                             const NT& r) {
+CGAL::Uncertain<CGAL::Comparison_result> distance_to_segment(const NT& cx, const NT& cy, const NT& ax, const NT& ay,
+                                                             const NT& bx, const NT& by, const NT& r) {
   using CGAL::Uncertain;
   const NT dx = bx - ax;
   const NT dy = by - ay;

@@ -24,7 +24,9 @@ namespace frontpack::detail {
 using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 using KPoint = Kernel::Point_2;
 
-inline KPoint to_cgal(Point p) { return {p.x, p.y}; }
+inline KPoint to_cgal(Point p) {
+  return {p.x, p.y};
+}
 
 /// +1 if a, b, c turn left (anticlockwise), -1 if right, 0 if collinear. Exact.
 inline int orientation(Point a, Point b, Point c) {

@@ -43,7 +43,8 @@ double seconds_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
-Packing run_fill(const Domain& domain, const FillOptions& options, const std::function<bool(const Progress&)>& progress) {
+Packing run_fill(const Domain& domain, const FillOptions& options,
+                 const std::function<bool(const Progress&)>& progress) {
   check_options(options);
   const RadiusDistribution& radii = options.radii.distribution();
   const double clearance = clearance_for(domain, options);
@@ -139,12 +140,18 @@ Packing run_fill(const Domain& domain, const FillOptions& options, const std::fu
 
 }  // namespace
 
-Packing fill(const Domain& domain, const FillOptions& options) { return run_fill(domain, options, {}); }
+Packing fill(const Domain& domain, const FillOptions& options) {
+  return run_fill(domain, options, {});
+}
 
 Generator::Generator(Domain domain, FillOptions options) : domain_(std::move(domain)), options_(std::move(options)) {}
 
-void Generator::on_progress(std::function<bool(const Progress&)> callback) { progress_ = std::move(callback); }
+void Generator::on_progress(std::function<bool(const Progress&)> callback) {
+  progress_ = std::move(callback);
+}
 
-Packing Generator::run() { return run_fill(domain_, options_, progress_); }
+Packing Generator::run() {
+  return run_fill(domain_, options_, progress_);
+}
 
 }  // namespace frontpack

@@ -23,6 +23,8 @@ inline double next_down(double v) noexcept {
 }
 
 /// The smallest double above v.
-inline double next_up(double v) noexcept { return -next_down(-v); }
+inline double next_up(double v) noexcept {
+  return -next_down(-v);
+}
 
 }  // namespace frontpack::detail

@@ -403,6 +403,35 @@ class Front {
     return std::atan2(ax * by - ay * bx, ax * bx + ay * by);
   }
 
+  // Walks the front from `from`, forwards (next) or backwards (prev), and returns the first node
+  // that a disk at (x, y, r) overlaps, or kNone. The walk visits at most M nodes, stops before
+  // `stop` or `also_stop`, after the open front's end wall, and (closed form, with `angles`) once
+  // it has turned by more than half a turn about O, `acc` being the angle already turned
+  // (Sec. 2.4.2: what lies beyond is on the other side of the active segment).
+  std::int32_t first_overlap(std::int32_t from, bool forward, std::int32_t stop, std::int32_t also_stop, double acc,
+                             bool angles, double x, double y, double r) {
+    const std::vector<std::int32_t>& step = forward ? next_ : prev_;
+    const std::int32_t end_wall = forward ? kRight : kLeft;
+    std::size_t steps = 0;
+    for (std::int32_t v = from; v != stop && v != also_stop && steps < window_; ++steps) {
+      const auto vi = static_cast<std::size_t>(v);
+      if (angles) {
+        acc += forward ? angle(prev_[vi], v) : angle(v, next_[vi]);
+        if (acc > std::numbers::pi) {
+          break;
+        }
+      }
+      if (overlaps_node(x, y, r, v)) {
+        return v;
+      }
+      if (open_ && v == end_wall) {
+        break;
+      }
+      v = step[vi];
+    }
+    return kNone;
+  }
+
   // ------------------------------------------------------------------------------------------
   // Sec. 2.2: placing a disk of radius r on segment c -> n, with cases (a)-(d).
   // Returns the new node, or kNone after retiring a segment (then cur_after_failure_ is where the
@@ -430,44 +459,11 @@ class Front {
       // From |c - O| >= 6 (M + 1) rmax the total cannot reach pi: no angle needs computing.
       const bool angles = !open_ && needs_angles(c);
       if (can_forward) {
-        double acc = angles ? angle(c, n) : 0;
-        std::size_t steps = 0;
-        for (std::int32_t v = next_[static_cast<std::size_t>(n)]; v != c && steps < window_; ++steps) {
-          if (angles) {
-            acc += angle(prev_[static_cast<std::size_t>(v)], v);
-            if (acc > std::numbers::pi) {
-              break;
-            }
-          }
-          if (overlaps_node(px, py, r, v)) {
-            j = v;
-            break;
-          }
-          if (open_ && v == kRight) {
-            break;
-          }
-          v = next_[static_cast<std::size_t>(v)];
-        }
+        j = first_overlap(next_[static_cast<std::size_t>(n)], true, c, kNone, angles ? angle(c, n) : 0, angles, px, py,
+                          r);
       }
       if (can_backward) {
-        double acc = 0;
-        std::size_t steps = 0;
-        for (std::int32_t v = prev_[static_cast<std::size_t>(c)]; v != n && v != j && steps < window_; ++steps) {
-          if (angles) {
-            acc += angle(v, next_[static_cast<std::size_t>(v)]);
-            if (acc > std::numbers::pi) {
-              break;
-            }
-          }
-          if (overlaps_node(px, py, r, v)) {
-            u = v;
-            break;
-          }
-          if (open_ && v == kLeft) {
-            break;
-          }
-          v = prev_[static_cast<std::size_t>(v)];
-        }
+        u = first_overlap(prev_[static_cast<std::size_t>(c)], false, n, j, 0, angles, px, py, r);
       }
       if (j == kNone && u == kNone) {
         if (!overlaps_anything(px, py, r, c, n)) {
@@ -507,8 +503,8 @@ class Front {
   // Sec. 2.1: three mutually tangent disks D1, D2, D3, anticlockwise, at the start point; the
   // front D1 -> D2 -> D3 -> D1.
   std::int32_t start_closed() {
-    const Point s = req_.start ? Point{req_.start->x - origin_.x, req_.start->y - origin_.y}
-                               : Point{box_.xmax / 2, box_.ymax / 2};
+    const Point s =
+        req_.start ? Point{req_.start->x - origin_.x, req_.start->y - origin_.y} : Point{box_.xmax / 2, box_.ymax / 2};
     const double r1 = draw();
     const double r2 = draw();
     const double r3 = draw();

@@ -27,8 +27,7 @@ class Uniform final : public RadiusDistribution {
 
 void check_radius(double r, const char* what) {
   if (!std::isfinite(r) || !(r > 0)) {
-    throw OptionError(std::string("radius: ") + what + " must be a finite number > 0, got " +
-                      detail::format_double(r));
+    throw OptionError(std::string("radius: ") + what + " must be a finite number > 0, got " + detail::format_double(r));
   }
 }
 

@@ -15,8 +15,8 @@ namespace frontpack::detail {
 
 struct RingInfo {
   std::uint32_t part = 0;
-  std::uint32_t ring = 0;  ///< 0 = outer ring, k = hole k (input numbering)
-  std::uint32_t first = 0; ///< first vertex in RingSet::v
+  std::uint32_t ring = 0;   ///< 0 = outer ring, k = hole k (input numbering)
+  std::uint32_t first = 0;  ///< first vertex in RingSet::v
   std::uint32_t count = 0;
 };
 

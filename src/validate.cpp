@@ -11,9 +11,9 @@
 #include <CGAL/box_intersection_d.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <deque>
-#include <cmath>
 #include <optional>
 #include <string>
 #include <tuple>
@@ -65,10 +65,10 @@ RingSet make_ring_set(const RawParts& parts, bool require_closed, const SourceLo
       for (std::size_t k = 0; k < pts.size(); ++k) {
         const Point q = pts[k];
         if (!std::isfinite(q.x) || !std::isfinite(q.y)) {
-          throw InvalidDomainError(Kind::non_finite_coordinate,
-                                   ring_name(p, r) + ": " + vertex_text(p, r, k, q, where) +
-                                       " has a non-finite coordinate",
-                                   Site{p, r, k}, {}, q);
+          throw InvalidDomainError(
+              Kind::non_finite_coordinate,
+              ring_name(p, r) + ": " + vertex_text(p, r, k, q, where) + " has a non-finite coordinate", Site{p, r, k},
+              {}, q);
         }
         if (std::abs(q.x) > max_coordinate || std::abs(q.y) > max_coordinate) {
           throw InvalidDomainError(Kind::coordinate_out_of_range,
@@ -79,8 +79,7 @@ RingSet make_ring_set(const RawParts& parts, bool require_closed, const SourceLo
         }
       }
       if (pts.empty()) {
-        throw InvalidDomainError(Kind::too_few_vertices, ring_name(p, r) + ": the ring has no vertex",
-                                 Site{p, r, {}});
+        throw InvalidDomainError(Kind::too_few_vertices, ring_name(p, r) + ": the ring has no vertex", Site{p, r, {}});
       }
       std::size_t n = pts.size();
       if (require_closed && pts.front() != pts.back()) {
@@ -143,7 +142,9 @@ struct Touch {
   std::uint32_t edge_b;  // an edge of ring_b through p
 };
 
-bool point_less(Point a, Point b) noexcept { return std::tie(a.x, a.y) < std::tie(b.x, b.y); }
+bool point_less(Point a, Point b) noexcept {
+  return std::tie(a.x, a.y) < std::tie(b.x, b.y);
+}
 
 class Validator {
  public:
@@ -185,10 +186,10 @@ class Validator {
         flat = orientation(a, b, rs_.v[info.first + k]) == 0;
       }
       if (flat) {
-        throw InvalidDomainError(Kind::zero_area,
-                                 name(r) + ": the ring has zero area: all its vertices are collinear, from " +
-                                     vertex(info.first),
-                                 site(info.first), {}, a);
+        throw InvalidDomainError(
+            Kind::zero_area,
+            name(r) + ": the ring has zero area: all its vertices are collinear, from " + vertex(info.first),
+            site(info.first), {}, a);
       }
     }
   }
@@ -214,8 +215,8 @@ class Validator {
   }
 
   void check_edge_pairs() {
-    using Box = CGAL::Box_intersection_d::Box_with_handle_d<double, 2, const Point*,
-                                                             CGAL::Box_intersection_d::ID_FROM_HANDLE>;
+    using Box =
+        CGAL::Box_intersection_d::Box_with_handle_d<double, 2, const Point*, CGAL::Box_intersection_d::ID_FROM_HANDLE>;
     std::vector<Box> boxes;
     boxes.reserve(rs_.v.size());
     for (std::uint32_t e = 0; e < rs_.v.size(); ++e) {
@@ -297,7 +298,8 @@ class Validator {
     const int o3 = orientation(C, D, A);
     const int o4 = orientation(C, D, B);
     if (o1 * o2 < 0 && o3 * o4 < 0) {
-      const auto x = CGAL::intersection(Kernel::Segment_2(to_cgal(A), to_cgal(B)), Kernel::Segment_2(to_cgal(C), to_cgal(D)));
+      const auto x =
+          CGAL::intersection(Kernel::Segment_2(to_cgal(A), to_cgal(B)), Kernel::Segment_2(to_cgal(C), to_cgal(D)));
       std::optional<Point> at;
       if (x) {
         if (const auto* pt = boost::get<KPoint>(&*x)) {
@@ -409,7 +411,8 @@ class Validator {
 
   // A point of ring r that lies on no other ring: a vertex that is not a touch point, else a
   // point on an edge between touch points (computed exactly, tested without the grid).
-  [[nodiscard]] std::optional<std::uint32_t> free_vertex(std::uint32_t r, const std::vector<Point>& touch_points) const {
+  [[nodiscard]] std::optional<std::uint32_t> free_vertex(std::uint32_t r,
+                                                         const std::vector<Point>& touch_points) const {
     const RingInfo& info = ring(r);
     for (std::uint32_t k = info.first; k < info.first + info.count; ++k) {
       if (!std::binary_search(touch_points.begin(), touch_points.end(), rs_.v[k], point_less)) {
@@ -514,16 +517,16 @@ class Validator {
       const std::uint32_t own_shell = rs_.part_first_ring[info.part];
       if (info.ring > 0) {
         if (std::find(odd.begin(), odd.end(), own_shell) == odd.end()) {
-          throw InvalidDomainError(Kind::hole_outside_shell,
-                                   name(r) + ": the hole is not inside its outer ring (" + witness +
-                                       " lies outside it)",
-                                   site(at), site(rs_.rings[own_shell].first), witness_point);
+          throw InvalidDomainError(
+              Kind::hole_outside_shell,
+              name(r) + ": the hole is not inside its outer ring (" + witness + " lies outside it)", site(at),
+              site(rs_.rings[own_shell].first), witness_point);
         }
         for (const std::uint32_t s : odd) {
           if (s != own_shell && ring(s).part == info.part) {
             throw InvalidDomainError(Kind::nested_holes,
-                                     name(r) + " lies inside " + name(s) + " (" + witness + " is inside it)",
-                                     site(at), site(ring(s).first), witness_point);
+                                     name(r) + " lies inside " + name(s) + " (" + witness + " is inside it)", site(at),
+                                     site(ring(s).first), witness_point);
           }
         }
         continue;
@@ -539,8 +542,8 @@ class Validator {
         if (ring(s).ring == 0 && in_hole_of[ring(s).part] == 0) {
           throw InvalidDomainError(Kind::overlapping_parts,
                                    "polygons " + std::to_string(ring(s).part) + " and " + std::to_string(info.part) +
-                                       " overlap: " + name(r) + " lies inside polygon " +
-                                       std::to_string(ring(s).part) + " (" + witness + " is inside it)",
+                                       " overlap: " + name(r) + " lies inside polygon " + std::to_string(ring(s).part) +
+                                       " (" + witness + " is inside it)",
                                    site(at), site(ring(s).first), witness_point);
         }
       }
@@ -566,9 +569,10 @@ class Validator {
       return std::tie(a.part, a.p.x, a.p.y, a.ring) < std::tie(b.part, b.p.x, b.p.y, b.ring);
     };
     std::sort(links.begin(), links.end(), less);
-    links.erase(std::unique(links.begin(), links.end(),
-                            [](const Link& a, const Link& b) { return a.part == b.part && a.p == b.p && a.ring == b.ring; }),
-                links.end());
+    links.erase(
+        std::unique(links.begin(), links.end(),
+                    [](const Link& a, const Link& b) { return a.part == b.part && a.p == b.p && a.ring == b.ring; }),
+        links.end());
     // Union-find over rings [0, R) and touch points [R, R + points).
     const std::size_t R = rs_.rings.size();
     std::vector<std::uint32_t> parent(R + links.size());
@@ -582,7 +586,7 @@ class Validator {
       }
       return x;
     };
-    std::vector<Point> point_of;  // touch point of node R + i
+    std::vector<Point> point_of;                                  // touch point of node R + i
     std::vector<std::pair<std::uint32_t, std::uint32_t>> joined;  // (ring, node) links so far
     auto node = static_cast<std::uint32_t>(R - 1);
     for (std::size_t i = 0; i < links.size(); ++i) {
@@ -659,7 +663,9 @@ class Validator {
 
 }  // namespace
 
-void validate(const RingSet& rings, EdgeGrid& grid, const SourceLocator& where) { Validator(rings, where).run(grid); }
+void validate(const RingSet& rings, EdgeGrid& grid, const SourceLocator& where) {
+  Validator(rings, where).run(grid);
+}
 
 namespace {
 
@@ -697,7 +703,9 @@ double nearest_double(const CGAL::Mpzf& x) {
 
 }  // namespace
 
-int ring_orientation(const RingSet& rings, std::size_t r) { return static_cast<int>(twice_area(rings, r).sign()); }
+int ring_orientation(const RingSet& rings, std::size_t r) {
+  return static_cast<int>(twice_area(rings, r).sign());
+}
 
 double exact_domain_area(const RingSet& rings) {
   CGAL::Mpzf total(0);

@@ -28,24 +28,30 @@ TextPosition text_position(std::string_view text, std::size_t offset) noexcept {
 
 namespace {
 
-bool is_space(char c) noexcept { return c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '\f' || c == '\v'; }
-bool is_alpha(char c) noexcept { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_'; }
-bool is_digit(char c) noexcept { return c >= '0' && c <= '9'; }
+bool is_space(char c) noexcept {
+  return c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '\f' || c == '\v';
+}
+bool is_alpha(char c) noexcept {
+  return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_';
+}
+bool is_digit(char c) noexcept {
+  return c >= '0' && c <= '9';
+}
 
 std::string upper(std::string_view s) {
   std::string out(s);
-  std::transform(out.begin(), out.end(), out.begin(), [](char c) {
-    return static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
-  });
+  std::transform(out.begin(), out.end(), out.begin(),
+                 [](char c) { return static_cast<char>(std::toupper(static_cast<unsigned char>(c))); });
   return out;
 }
 
 // Other OGC / ISO geometry types: recognised so that the message can say "unsupported" rather
 // than "syntax error".
 constexpr std::array<std::string_view, 16> other_types = {
-    "POINT",        "LINESTRING",   "MULTIPOINT",        "MULTILINESTRING", "GEOMETRYCOLLECTION", "TRIANGLE",
-    "TIN",          "POLYHEDRALSURFACE", "CIRCULARSTRING", "COMPOUNDCURVE",  "CURVEPOLYGON",       "MULTICURVE",
-    "MULTISURFACE", "CURVE",        "SURFACE",           "GEOMETRY"};
+    "POINT",        "LINESTRING", "MULTIPOINT",        "MULTILINESTRING", "GEOMETRYCOLLECTION",
+    "TRIANGLE",     "TIN",        "POLYHEDRALSURFACE", "CIRCULARSTRING",  "COMPOUNDCURVE",
+    "CURVEPOLYGON", "MULTICURVE", "MULTISURFACE",      "CURVE",           "SURFACE",
+    "GEOMETRY"};
 
 class Parser {
  public:
@@ -70,8 +76,8 @@ class Parser {
       if (keyword.size() > b.size() && keyword.compare(0, b.size(), b) == 0) {
         const std::string dim = keyword.substr(b.size());
         if (dim == "Z" || dim == "M" || dim == "ZM") {
-          fail(WktError::Kind::dimension,
-               dim + " coordinates are not supported: frontpack domains are 2D (x y)", start + b.size());
+          fail(WktError::Kind::dimension, dim + " coordinates are not supported: frontpack domains are 2D (x y)",
+               start + b.size());
         }
       }
     }
@@ -362,6 +368,8 @@ class Parser {
 
 }  // namespace
 
-std::vector<ParsedPolygon> parse_wkt(std::string_view text) { return Parser(text).parse(); }
+std::vector<ParsedPolygon> parse_wkt(std::string_view text) {
+  return Parser(text).parse();
+}
 
 }  // namespace frontpack::detail

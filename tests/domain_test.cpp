@@ -42,12 +42,15 @@ template <class RingT>
 CGAL::Gmpq twice_signed_area(const RingT& ring) {
   CGAL::Gmpq sum(0);
   for (std::size_t k = 0; k + 1 < ring.size(); ++k) {  // bg rings are closed
-    sum += CGAL::Gmpq(ring[k].x()) * CGAL::Gmpq(ring[k + 1].y()) - CGAL::Gmpq(ring[k].y()) * CGAL::Gmpq(ring[k + 1].x());
+    sum +=
+        CGAL::Gmpq(ring[k].x()) * CGAL::Gmpq(ring[k + 1].y()) - CGAL::Gmpq(ring[k].y()) * CGAL::Gmpq(ring[k + 1].x());
   }
   return sum;
 }
 
-CGAL::Gmpq abs(const CGAL::Gmpq& q) { return q < 0 ? -q : q; }
+CGAL::Gmpq abs(const CGAL::Gmpq& q) {
+  return q < 0 ? -q : q;
+}
 
 // The exact area of a WKT geometry, read by Boost.Geometry.
 CGAL::Gmpq reference_area(const std::string& wkt) {
@@ -87,7 +90,9 @@ int orientation(const fp::Ring& ring) {
 
 }  // namespace
 
-TEST(Shapes, CorpusIsNotEmpty) { ASSERT_GE(fp::test::shape_files().size(), 12U); }
+TEST(Shapes, CorpusIsNotEmpty) {
+  ASSERT_GE(fp::test::shape_files().size(), 12U);
+}
 
 TEST(Shapes, EveryShapeLoadsWithExactAreaAndNormalisedOrientation) {
   const auto files = fp::test::shape_files();

@@ -6,9 +6,9 @@
 #include <CGAL/Gmpq.h>
 
 #include <algorithm>
-#include <cstring>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <numbers>
 #include <random>
 #include <string>
@@ -42,7 +42,8 @@ std::size_t brute_force_overlaps(const std::vector<fp::Disk>& disks, std::size_t
   const double h = 2 * rmax;
   std::unordered_map<std::int64_t, std::vector<std::size_t>> cells;
   const auto key = [h](double x, double y) {
-    return (static_cast<std::int64_t>(std::floor(x / h)) << 32) ^ (static_cast<std::int64_t>(std::floor(y / h)) & 0xffffffff);
+    return (static_cast<std::int64_t>(std::floor(x / h)) << 32) ^
+           (static_cast<std::int64_t>(std::floor(y / h)) & 0xffffffff);
   };
   for (std::size_t i = 0; i < disks.size(); ++i) {
     cells[key(disks[i].centre.x, disks[i].centre.y)].push_back(i);
@@ -93,7 +94,8 @@ TEST_P(FillShapes, CertifiedOnBothFormsAndThreeSeeds) {
   const fp::Domain d = fp::Domain::from_wkt_file(fp::test::shapes_dir() / GetParam());
   // Size r so that about 4000 disks of mean area fit the bounding box of the largest part.
   const fp::Box b = d.bbox();
-  const double r = std::sqrt(b.width() * b.height() / (4000 * std::numbers::pi * 37.0)) ;  // E[r^2] = 37 r^2 for [r, 10r]
+  const double r =
+      std::sqrt(b.width() * b.height() / (4000 * std::numbers::pi * 37.0));  // E[r^2] = 37 r^2 for [r, 10r]
   for (const fp::Method m : {fp::Method::closed, fp::Method::open}) {
     for (const std::uint64_t seed : {1ULL, 2ULL, 0xfeedULL}) {
       SCOPED_TRACE(std::string(fp::to_string(m)) + " seed " + std::to_string(seed));
@@ -127,7 +129,9 @@ INSTANTIATE_TEST_SUITE_P(Shapes, FillShapes,
                            return name.substr(0, name.find('.'));
                          });
 
-TEST(FillShapes, CorpusCoversEveryShape) { EXPECT_EQ(fp::test::shape_files().size(), 14U); }
+TEST(FillShapes, CorpusCoversEveryShape) {
+  EXPECT_EQ(fp::test::shape_files().size(), 14U);
+}
 
 // The certifier must find what is there: a planted overlap and a planted outside disk.
 TEST(Certify, FindsPlantedDefects) {

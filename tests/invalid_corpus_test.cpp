@@ -48,8 +48,12 @@ struct Manifest {
   std::vector<std::string> problems;  ///< malformed rows
 };
 
-std::filesystem::path corpus_dir() { return fp::test::data_dir() / "invalid"; }
-std::filesystem::path manifest_path() { return corpus_dir() / "expected.tsv"; }
+std::filesystem::path corpus_dir() {
+  return fp::test::data_dir() / "invalid";
+}
+std::filesystem::path manifest_path() {
+  return corpus_dir() / "expected.tsv";
+}
 
 std::vector<std::string> split_tabs(const std::string& line) {
   std::vector<std::string> fields;
@@ -152,7 +156,9 @@ std::string test_name(const ::testing::TestParamInfo<CorpusCase>& info) {
   return repeated ? name + "_line" + std::to_string(info.param.line) : name;
 }
 
-bool contains(const std::string& text, const std::string& fragment) { return text.find(fragment) != std::string::npos; }
+bool contains(const std::string& text, const std::string& fragment) {
+  return text.find(fragment) != std::string::npos;
+}
 
 // what() with the file's full path replaced by its bare name, so that the manifest's fragments
 // do not depend on where the source tree is: "(/src/tests/data/invalid/a.wkt:line 1, column 3)"

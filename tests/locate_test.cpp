@@ -14,20 +14,34 @@ using fp::Location;
 
 namespace {
 
-double up(double v) { return std::nextafter(v, std::numeric_limits<double>::infinity()); }
-double down(double v) { return std::nextafter(v, -std::numeric_limits<double>::infinity()); }
+double up(double v) {
+  return std::nextafter(v, std::numeric_limits<double>::infinity());
+}
+double down(double v) {
+  return std::nextafter(v, -std::numeric_limits<double>::infinity());
+}
 
 // A square with a square hole and a diagonal edge: 0.1 is not representable, so points "on"
 // the diagonal edge are decided by the exact orientation of the very doubles given.
-const char* const kPlate =
-    "POLYGON((0 0,4 0,4 3,3 4,0 4,0 0),(1 1,1 2,2 2,2 1,1 1))";
+const char* const kPlate = "POLYGON((0 0,4 0,4 3,3 4,0 4,0 0),(1 1,1 2,2 2,2 1,1 1))";
 
 }  // namespace
 
 TEST(Locate, VerticesAndEdgesAreBoundary) {
   const fp::Domain d = fp::Domain::from_wkt(kPlate);
-  for (const fp::Point p : {fp::Point{0, 0}, {4, 0}, {4, 3}, {3, 4}, {0, 4}, {1, 1}, {2, 2}, {2, 0}, {4, 1.5},
-                            {3.5, 3.5}, {1.5, 1}, {1, 1.75}, {0, 0.1}}) {
+  for (const fp::Point p : {fp::Point{0, 0},
+                            {4, 0},
+                            {4, 3},
+                            {3, 4},
+                            {0, 4},
+                            {1, 1},
+                            {2, 2},
+                            {2, 0},
+                            {4, 1.5},
+                            {3.5, 3.5},
+                            {1.5, 1},
+                            {1, 1.75},
+                            {0, 0.1}}) {
     EXPECT_EQ(d.locate(p), Location::boundary) << p.x << " " << p.y;
   }
 }
@@ -76,8 +90,10 @@ TEST(Locate, OneUlpOffADiagonalEdge) {
   // 0.1 is not representable: the double nearest 3.1 plus the one nearest 3.9 need not be on
   // the line; the answer must follow the exact sum, not the rounded one.
   const fp::Point p{3.1, 3.9};
-  const long double exact_sum = static_cast<long double>(p.x) + static_cast<long double>(p.y);  // 64-bit mantissa: exact
-  const Location expected = exact_sum == 7.0L ? Location::boundary : (exact_sum < 7.0L ? Location::inside : Location::outside);
+  const long double exact_sum =
+      static_cast<long double>(p.x) + static_cast<long double>(p.y);  // 64-bit mantissa: exact
+  const Location expected =
+      exact_sum == 7.0L ? Location::boundary : (exact_sum < 7.0L ? Location::inside : Location::outside);
   EXPECT_EQ(d.locate(p), expected);
 }
 
@@ -112,7 +128,7 @@ TEST(Contains, DiagonalEdgeTangency) {
 
 TEST(Contains, DegenerateDisks) {
   const fp::Domain d = fp::Domain::from_wkt(kPlate);
-  EXPECT_TRUE(d.contains({{0, 0}, 0.0}));    // a point on the boundary touches
+  EXPECT_TRUE(d.contains({{0, 0}, 0.0}));  // a point on the boundary touches
   EXPECT_TRUE(d.contains({{0.5, 0.5}, 0.0}));
   EXPECT_FALSE(d.contains({{1.5, 1.5}, 0.0}));  // in the hole
   EXPECT_FALSE(d.contains({{0, 1}, 0.25}));     // centre on the boundary, positive radius
@@ -145,8 +161,8 @@ TEST(Contains, BatchAgreesWithSingleQueries) {
 }
 
 TEST(Contains, MultipolygonIslandInAHole) {
-  const fp::Domain d = fp::Domain::from_wkt(
-      "MULTIPOLYGON(((0 0,9 0,9 9,0 9,0 0),(2 2,2 7,7 7,7 2,2 2)),((3 3,6 3,6 6,3 6,3 3)))");
+  const fp::Domain d =
+      fp::Domain::from_wkt("MULTIPOLYGON(((0 0,9 0,9 9,0 9,0 0),(2 2,2 7,7 7,7 2,2 2)),((3 3,6 3,6 6,3 6,3 3)))");
   EXPECT_EQ(d.locate({1, 1}), Location::inside);
   EXPECT_EQ(d.locate({2.5, 2.5}), Location::outside);  // in the lake
   EXPECT_EQ(d.locate({4.5, 4.5}), Location::inside);   // on the island

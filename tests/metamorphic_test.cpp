@@ -111,8 +111,9 @@ TEST_P(Metamorphic, TranslationByAnExactOffset) {
   // above its coordinates is exact (decimal inputs such as 0.1 use all 53 bits otherwise).
   const int e = std::ilogb(original.max_abs_coordinate());
   const double grid = std::ldexp(1.0, e - 30);
-  const fp::Domain d = fp::Domain::from_polygons(
-      map_polygons(original, [grid](fp::Point p) { return fp::Point{std::round(p.x / grid) * grid, std::round(p.y / grid) * grid}; }));
+  const fp::Domain d = fp::Domain::from_polygons(map_polygons(original, [grid](fp::Point p) {
+    return fp::Point{std::round(p.x / grid) * grid, std::round(p.y / grid) * grid};
+  }));
   const double offset = std::ldexp(1.0, e + 3);
   for (const fp::Polygon& p : d.polygons()) {
     for (const fp::Point& v : p.outer) {
@@ -122,18 +123,34 @@ TEST_P(Metamorphic, TranslationByAnExactOffset) {
   }
   // (p + o) - o is exact for |p| <= o / 4 (Sterbenz), and so is adding o to the result.
   check_transform(
-      d, [offset](fp::Point p) { return fp::Point{p.x + offset, p.y - offset}; }, 1.0, 1.0,
-      [offset](fp::Point p) { return fp::Point{(p.x + offset) - offset, (p.y - offset) + offset}; });
+      d,
+      [offset](fp::Point p) {
+        return fp::Point{p.x + offset, p.y - offset};
+      },
+      1.0, 1.0,
+      [offset](fp::Point p) {
+        return fp::Point{(p.x + offset) - offset, (p.y - offset) + offset};
+      });
 }
 
 TEST_P(Metamorphic, ScalingByTwo) {
   const fp::Domain d = fp::Domain::from_wkt_file(fp::test::shapes_dir() / GetParam());
-  check_transform(d, [](fp::Point p) { return fp::Point{2 * p.x, 2 * p.y}; }, 2.0, 4.0, [](fp::Point p) { return p; });
+  check_transform(
+      d,
+      [](fp::Point p) {
+        return fp::Point{2 * p.x, 2 * p.y};
+      },
+      2.0, 4.0, [](fp::Point p) { return p; });
 }
 
 TEST_P(Metamorphic, MirrorSwapsOrientationButNotAnswers) {
   const fp::Domain d = fp::Domain::from_wkt_file(fp::test::shapes_dir() / GetParam());
-  check_transform(d, [](fp::Point p) { return fp::Point{-p.x, p.y}; }, 1.0, 1.0, [](fp::Point p) { return p; });
+  check_transform(
+      d,
+      [](fp::Point p) {
+        return fp::Point{-p.x, p.y};
+      },
+      1.0, 1.0, [](fp::Point p) { return p; });
 }
 
 TEST_P(Metamorphic, ReversedRingsAndReorderedHolesAndPolygons) {
@@ -159,8 +176,8 @@ TEST_P(Metamorphic, ReversedRingsAndReorderedHolesAndPolygons) {
 
 INSTANTIATE_TEST_SUITE_P(Shapes, Metamorphic,
                          ::testing::Values("unit_square.wkt", "concave_polygon.wkt", "l_shape.wkt",
-                                           "plate_with_holes.wkt", "annulus.wkt", "islands.wkt", "gear.wkt",
-                                           "comb.wkt", "hole_touching.wkt", "offset_1e6.wkt", "millimetre.wkt",
+                                           "plate_with_holes.wkt", "annulus.wkt", "islands.wkt", "gear.wkt", "comb.wkt",
+                                           "hole_touching.wkt", "offset_1e6.wkt", "millimetre.wkt",
                                            "narrow_channel.wkt"),
                          [](const auto& param_info) {
                            std::string name = param_info.param;

@@ -76,16 +76,24 @@ constexpr double kDenormMin = std::numeric_limits<double>::denorm_min();
 constexpr double kNormMin = std::numeric_limits<double>::min();
 constexpr double kMax = std::numeric_limits<double>::max();
 
-double up(double v) { return std::nextafter(v, kInf); }
-double down(double v) { return std::nextafter(v, -kInf); }
+double up(double v) {
+  return std::nextafter(v, kInf);
+}
+double down(double v) {
+  return std::nextafter(v, -kInf);
+}
 
 std::string hex(double v) {
   char buf[64];
   std::snprintf(buf, sizeof buf, "%a", v);
   return buf;
 }
-std::string hex(Point p) { return "(" + hex(p.x) + ", " + hex(p.y) + ")"; }
-std::string hex(const Disk& d) { return "centre " + hex(d.centre) + " radius " + hex(d.radius); }
+std::string hex(Point p) {
+  return "(" + hex(p.x) + ", " + hex(p.y) + ")";
+}
+std::string hex(const Disk& d) {
+  return "centre " + hex(d.centre) + " radius " + hex(d.radius);
+}
 
 // ---------------------------------------------------------------------------------------------
 // Deterministic randomness: std::mt19937_64 is fully specified; the distributions are not, so
@@ -323,8 +331,8 @@ class Mismatches {
 struct QueryBudget {
   std::size_t random_points;
   std::size_t lattice_points;
-  std::size_t vertex_sample;  // vertices (and edges) used, at most
-  std::size_t disk_centres;   // interior centres with near-tangent radii, at most
+  std::size_t vertex_sample;         // vertices (and edges) used, at most
+  std::size_t disk_centres;          // interior centres with near-tangent radii, at most
   std::size_t special_centres = 40;  // centres for huge / infinite / NaN / negative radii
   std::size_t tiny_stride = 1;       // tiny radii about every tiny_stride-th point near the boundary
 };
@@ -473,7 +481,8 @@ ShapeQueries make_queries(const BruteForce& oracle, const std::vector<std::vecto
       }
     }
     for (const Point p : on) {
-      for (const Point n : {p, Point{down(p.x), p.y}, Point{up(p.x), p.y}, Point{p.x, down(p.y)}, Point{p.x, up(p.y)}}) {
+      for (const Point n :
+           {p, Point{down(p.x), p.y}, Point{up(p.x), p.y}, Point{p.x, down(p.y)}, Point{p.x, up(p.y)}}) {
         pts.push_back(n);
         near_edge.push_back(n);
       }
@@ -571,7 +580,9 @@ struct PointKeyHash {
     return static_cast<std::size_t>((k.x * 0x9e3779b97f4a7c15ULL) ^ (k.y + 0x632be59bd9b4e019ULL + (k.x << 6)));
   }
 };
-PointKey key(Point p) { return {std::bit_cast<std::uint64_t>(p.x), std::bit_cast<std::uint64_t>(p.y)}; }
+PointKey key(Point p) {
+  return {std::bit_cast<std::uint64_t>(p.x), std::bit_cast<std::uint64_t>(p.y)};
+}
 
 /// Compares every answer of `domain` (read from `text`) with the brute-force oracle.
 void check_against_oracle(const std::string& name, const std::string& text, const fp::Domain& domain,
@@ -647,7 +658,9 @@ INSTANTIATE_TEST_SUITE_P(Oracle, OracleShapes, ::testing::ValuesIn(frontpack::te
                            return sanitize(param_info.param.stem().string());
                          });
 
-TEST(OracleShapesList, IsNotEmpty) { EXPECT_GE(frontpack::test::shape_files().size(), 1U); }
+TEST(OracleShapesList, IsNotEmpty) {
+  EXPECT_GE(frontpack::test::shape_files().size(), 1U);
+}
 
 // Synthetic domains at the extremes of the double range that the library promises to handle
 // exactly ("whatever their magnitude", |coordinate| <= 1e100), where the floating-point filters
@@ -658,7 +671,9 @@ struct SyntheticDomain {
   bool slow = false;  // the library needs ~1 ms per query here (see the sliver note): few queries
 };
 
-void PrintTo(const SyntheticDomain& d, std::ostream* os) { *os << d.name; }
+void PrintTo(const SyntheticDomain& d, std::ostream* os) {
+  *os << d.name;
+}
 
 const SyntheticDomain kSynthetic[] = {
     // Coordinates at the limit: squares overflow the interval filter.
@@ -723,7 +738,7 @@ TEST(OracleSelfCheck, KnownAnswers) {
   EXPECT_EQ(o.locate({down(1.5), 1}), Location::inside);
   EXPECT_EQ(o.locate({5, 2}), Location::outside);
   EXPECT_EQ(o.locate({kDenormMin, kDenormMin}), Location::inside);
-  EXPECT_TRUE(o.contains({{1, 3}, 1}));   // tangent to x = 0 and y = 4
+  EXPECT_TRUE(o.contains({{1, 3}, 1}));  // tangent to x = 0 and y = 4
   EXPECT_FALSE(o.contains({{1, 3}, up(1.0)}));
   EXPECT_TRUE(o.contains({{kDenormMin, kDenormMin}, kDenormMin}));
   EXPECT_FALSE(o.contains({{kDenormMin, kDenormMin}, 2 * kDenormMin}));
@@ -829,7 +844,8 @@ BoostVerdict boost_verdict(const std::vector<fp::Polygon>& parts) {
 // simple unless points are collinear with the centre.
 void sort_by_angle(std::vector<Point>& pts, int cx2, int cy2) {
   const auto rel = [cx2, cy2](Point p) {
-    return std::pair<long long, long long>{2 * static_cast<long long>(p.x) - cx2, 2 * static_cast<long long>(p.y) - cy2};
+    return std::pair<long long, long long>{2 * static_cast<long long>(p.x) - cx2,
+                                           2 * static_cast<long long>(p.y) - cy2};
   };
   const auto half = [](std::pair<long long, long long> v) { return v.second < 0 || (v.second == 0 && v.first < 0); };
   std::stable_sort(pts.begin(), pts.end(), [&](Point a, Point b) {
@@ -1007,8 +1023,7 @@ const HandCase kHandCases[] = {
     {"hole touches shell at two points", "POLYGON((0 0,4 0,4 4,0 4,0 0),(2 0,1 2,2 4,3 2,2 0))", false},
     {"hole with every vertex on the shell", "POLYGON((0 0,4 0,4 4,0 4,0 0),(2 0,4 2,2 4,0 2,2 0))", false},
     {"holes touch at a point", "POLYGON((0 0,6 0,6 6,0 6,0 0),(1 1,3 1,3 3,1 3,1 1),(3 3,5 3,5 5,3 5,3 3))", true},
-    {"holes touch at two points", "POLYGON((0 0,6 0,6 6,0 6,0 0),(1 1,3 1,3 3,1 3,1 1),(3 1,5 2,3 3,4 2,3 1))",
-     false},
+    {"holes touch at two points", "POLYGON((0 0,6 0,6 6,0 6,0 0),(1 1,3 1,3 3,1 3,1 1),(3 1,5 2,3 3,4 2,3 1))", false},
     {"three holes touch in a cycle",
      "POLYGON((0 0,6 0,6 6,0 6,0 0),(2 2,4 2,3 1,2 2),(4 2,3 4,5 4,4 2),(3 4,2 2,1 4,3 4))", false},
     {"hole equals shell", "POLYGON((0 0,4 0,4 4,0 4,0 0),(0 0,4 0,4 4,0 4,0 0))", false},
@@ -1025,15 +1040,14 @@ const HandCase kHandCases[] = {
     {"zero area", "POLYGON((0 0,1 1,2 2,0 0))", false},
     {"zero area with repeated points", "POLYGON((0 0,0 0,2 0,2 0,0 0))", false},
     {"parts touch at a point", "MULTIPOLYGON(((0 0,2 0,2 2,0 2,0 0)),((2 2,4 2,4 4,2 4,2 2)))", true},
-    {"parts touch at two points",
-     "MULTIPOLYGON(((0 0,4 0,4 1,1 1,1 3,4 3,4 4,0 4,0 0)),((4 1,6 1,6 3,4 3,5 2,4 1)))", true},
+    {"parts touch at two points", "MULTIPOLYGON(((0 0,4 0,4 1,1 1,1 3,4 3,4 4,0 4,0 0)),((4 1,6 1,6 3,4 3,5 2,4 1)))",
+     true},
     {"parts share an edge", "MULTIPOLYGON(((0 0,2 0,2 2,0 2,0 0)),((2 0,4 0,4 2,2 2,2 0)))", false},
     {"part inside part", "MULTIPOLYGON(((0 0,6 0,6 6,0 6,0 0)),((2 2,4 2,4 4,2 4,2 2)))", false},
     {"part in a hole", "MULTIPOLYGON(((0 0,6 0,6 6,0 6,0 0),(1 1,5 1,5 5,1 5,1 1)),((2 2,4 2,4 4,2 4,2 2)))", true},
     {"part in a hole touching it at four points",
      "MULTIPOLYGON(((0 0,6 0,6 6,0 6,0 0),(1 1,5 1,5 5,1 5,1 1)),((3 1,5 3,3 5,1 3,3 1)))", true},
-    {"part fills a hole", "MULTIPOLYGON(((0 0,6 0,6 6,0 6,0 0),(1 1,5 1,5 5,1 5,1 1)),((1 1,5 1,5 5,1 5,1 1)))",
-     false},
+    {"part fills a hole", "MULTIPOLYGON(((0 0,6 0,6 6,0 6,0 0),(1 1,5 1,5 5,1 5,1 1)),((1 1,5 1,5 5,1 5,1 1)))", false},
     // A nearly vertical edge whose x-extent (1e-310, or 1e-300 at a 1e9 scale) straddles a column
     // line of frontpack's edge grid: far from it, a hole is plainly inside and a part plainly
     // overlaps the first one.

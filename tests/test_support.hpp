@@ -8,8 +8,12 @@
 
 namespace frontpack::test {
 
-inline std::filesystem::path shapes_dir() { return FRONTPACK_SHAPES_DIR; }
-inline std::filesystem::path data_dir() { return FRONTPACK_TEST_DATA_DIR; }
+inline std::filesystem::path shapes_dir() {
+  return FRONTPACK_SHAPES_DIR;
+}
+inline std::filesystem::path data_dir() {
+  return FRONTPACK_TEST_DATA_DIR;
+}
 
 /// Every .wkt file in shapes/, sorted (the list is never empty: the caller asserts it).
 inline std::vector<std::filesystem::path> shape_files() {

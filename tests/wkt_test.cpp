@@ -42,7 +42,8 @@ TEST(Wkt, AcceptsKeywordsInAnyCaseAndAnyWhitespace) {
 }
 
 TEST(Wkt, ScientificNotationIsDecodedWithCorrectRounding) {
-  const fp::Domain d = fp::Domain::from_wkt("POLYGON((1e-3 2.5E-4, 3e-3 2.5e-4, 3E-03 1.25e-3, 1e-3 1.25e-3, 1e-3 2.5E-4))");
+  const fp::Domain d =
+      fp::Domain::from_wkt("POLYGON((1e-3 2.5E-4, 3e-3 2.5e-4, 3E-03 1.25e-3, 1e-3 1.25e-3, 1e-3 2.5E-4))");
   const fp::Ring& outer = d.polygons()[0].outer;
   EXPECT_EQ(outer[0].x, 0.001);
   EXPECT_EQ(outer[0].y, 0.00025);
@@ -50,8 +51,8 @@ TEST(Wkt, ScientificNotationIsDecodedWithCorrectRounding) {
 }
 
 TEST(Wkt, MultipolygonWithHolesAndRepeatedVertices) {
-  const fp::Domain d = fp::Domain::from_wkt(
-      "MULTIPOLYGON(((0 0,4 0,4 4,0 4,0 0),(1 1,1 1,1 2,2 2,2 1,1 1)),((5 0,6 0,6 0,6 1,5 0)))");
+  const fp::Domain d =
+      fp::Domain::from_wkt("MULTIPOLYGON(((0 0,4 0,4 4,0 4,0 0),(1 1,1 1,1 2,2 2,2 1,1 1)),((5 0,6 0,6 0,6 1,5 0)))");
   EXPECT_EQ(d.num_polygons(), 2U);
   EXPECT_EQ(d.num_holes(), 1U);
   // Repeated consecutive vertices are removed: 4 + 4 + 3.
@@ -60,8 +61,8 @@ TEST(Wkt, MultipolygonWithHolesAndRepeatedVertices) {
 }
 
 TEST(Wkt, RoundTripsThroughToWkt) {
-  const fp::Domain d = fp::Domain::from_wkt(
-      "MULTIPOLYGON(((0 0,4 0,4 4,0 4,0 0),(1 1,1 2,2 2,2 1,1 1)),((5 0,6 0,6 1,5 0.1,5 0)))");
+  const fp::Domain d =
+      fp::Domain::from_wkt("MULTIPOLYGON(((0 0,4 0,4 4,0 4,0 0),(1 1,1 2,2 2,2 1,1 1)),((5 0,6 0,6 1,5 0.1,5 0)))");
   const fp::Domain again = fp::Domain::from_wkt(d.to_wkt());
   ASSERT_EQ(again.polygons().size(), d.polygons().size());
   for (std::size_t p = 0; p < d.polygons().size(); ++p) {

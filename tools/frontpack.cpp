@@ -66,6 +66,25 @@ int run_info(const DomainSource& src) {
   return ok;
 }
 
+// One exit code per kind of error (see the top of this file).
+int exit_code(const std::exception& e) {
+  if (dynamic_cast<const frontpack::IoError*>(&e) != nullptr ||
+      dynamic_cast<const std::filesystem::filesystem_error*>(&e) != nullptr) {
+    return io;
+  }
+  if (dynamic_cast<const frontpack::WktError*>(&e) != nullptr) {
+    return wkt;
+  }
+  if (dynamic_cast<const frontpack::InvalidDomainError*>(&e) != nullptr) {
+    return invalid_domain;
+  }
+  if (dynamic_cast<const frontpack::OptionError*>(&e) != nullptr ||
+      dynamic_cast<const frontpack::LimitError*>(&e) != nullptr) {
+    return bad_option;
+  }
+  return internal;
+}
+
 // "uniform:RMIN,RMAX" or "constant:R".
 frontpack::Radii parse_radius(const std::string& spec) {
   const auto colon = spec.find(':');
@@ -209,26 +228,9 @@ int main(int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     std::cerr << "frontpack: " << e.what() << "\n";
     return usage;
-  } catch (const frontpack::IoError& e) {
-    std::cerr << "frontpack: " << e.what() << "\n";
-    return io;
-  } catch (const frontpack::WktError& e) {
-    std::cerr << "frontpack: " << e.what() << "\n";
-    return wkt;
-  } catch (const frontpack::InvalidDomainError& e) {
-    std::cerr << "frontpack: " << e.what() << "\n";
-    return invalid_domain;
-  } catch (const frontpack::OptionError& e) {
-    std::cerr << "frontpack: " << e.what() << "\n";
-    return bad_option;
-  } catch (const frontpack::LimitError& e) {
-    std::cerr << "frontpack: " << e.what() << "\n";
-    return bad_option;
-  } catch (const std::filesystem::filesystem_error& e) {
-    std::cerr << "frontpack: " << e.what() << "\n";
-    return io;
   } catch (const std::exception& e) {
-    std::cerr << "frontpack: internal error: " << e.what() << "\n";
-    return internal;
+    const int code = exit_code(e);
+    std::cerr << "frontpack: " << (code == internal ? "internal error: " : "") << e.what() << "\n";
+    return code;
   }
 }

@@ -72,19 +72,19 @@ class WktError : public Error {
 class InvalidDomainError : public Error {
  public:
   enum class Kind {
-    empty,                  ///< no polygon at all
-    non_finite_coordinate,  ///< nan or inf in a coordinate
-    coordinate_out_of_range,///< |coordinate| above frontpack::max_coordinate
-    unclosed_ring,          ///< a WKT ring whose last point differs from its first
-    too_few_vertices,       ///< fewer than 3 distinct vertices
-    zero_area,              ///< all vertices of a ring are collinear
-    self_intersection,      ///< two edges of one ring intersect (crossing, touching, or a spike)
-    rings_cross,            ///< two rings cross (properly, or at a common point)
-    rings_overlap,          ///< two rings share a segment of positive length
-    hole_outside_shell,     ///< a hole not inside its outer ring
-    nested_holes,           ///< a hole inside another hole of the same polygon
-    overlapping_parts,      ///< the interiors of two polygons of a multipolygon intersect
-    disconnected_interior,  ///< touching rings split the interior of a polygon
+    empty,                    ///< no polygon at all
+    non_finite_coordinate,    ///< nan or inf in a coordinate
+    coordinate_out_of_range,  ///< |coordinate| above frontpack::max_coordinate
+    unclosed_ring,            ///< a WKT ring whose last point differs from its first
+    too_few_vertices,         ///< fewer than 3 distinct vertices
+    zero_area,                ///< all vertices of a ring are collinear
+    self_intersection,        ///< two edges of one ring intersect (crossing, touching, or a spike)
+    rings_cross,              ///< two rings cross (properly, or at a common point)
+    rings_overlap,            ///< two rings share a segment of positive length
+    hole_outside_shell,       ///< a hole not inside its outer ring
+    nested_holes,             ///< a hole inside another hole of the same polygon
+    overlapping_parts,        ///< the interiors of two polygons of a multipolygon intersect
+    disconnected_interior,    ///< touching rings split the interior of a polygon
   };
 
   struct Site {

@@ -105,17 +105,17 @@ struct FillOptions {
 
 /// Progress of a run, reported through Generator::on_progress.
 struct Progress {
-  std::size_t disks = 0;            ///< generated so far
-  double fraction = 0.0;            ///< estimated fraction of the work done, in [0, 1]
+  std::size_t disks = 0;  ///< generated so far
+  double fraction = 0.0;  ///< estimated fraction of the work done, in [0, 1]
 };
 
 /// The certifier's report.
 struct Certificate {
-  std::size_t generated = 0;  ///< disks produced by the generator
-  std::size_t culled = 0;     ///< removed because not entirely inside the domain (exact)
-  std::size_t dropped = 0;    ///< removed by the global overlap pass (0 for frontpack's generator)
+  std::size_t generated = 0;        ///< disks produced by the generator
+  std::size_t culled = 0;           ///< removed because not entirely inside the domain (exact)
+  std::size_t dropped = 0;          ///< removed by the global overlap pass (0 for frontpack's generator)
   std::size_t candidate_pairs = 0;  ///< pairs whose boxes met, each decided exactly
-  bool exact = true;          ///< every containment and every pair was decided exactly
+  bool exact = true;                ///< every containment and every pair was decided exactly
 };
 
 /// Counters of the advancing front (what the algorithm did, for diagnostics).
@@ -133,8 +133,8 @@ struct Packing {
   std::vector<Disk> disks;  ///< certified: pairwise non-overlapping, all inside the domain
   Certificate certificate;
   FillStats stats;
-  bool truncated = false;   ///< max_disks was reached
-  bool cancelled = false;   ///< the progress callback asked to stop
+  bool truncated = false;  ///< max_disks was reached
+  bool cancelled = false;  ///< the progress callback asked to stop
 };
 
 /// Fills the domain. Throws OptionError, LimitError.
@@ -158,7 +158,7 @@ class Generator {
 /// What certify() found about an arbitrary set of disks.
 struct CertifyReport {
   Certificate certificate;
-  std::vector<std::size_t> outside;                            ///< indices of disks not inside
+  std::vector<std::size_t> outside;                              ///< indices of disks not inside
   std::vector<std::pair<std::size_t, std::size_t>> overlapping;  ///< index pairs (i < j), sorted
 };
 

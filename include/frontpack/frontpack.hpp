@@ -5,6 +5,6 @@
 #include "frontpack/domain.hpp"
 #include "frontpack/errors.hpp"
 #include "frontpack/fill.hpp"
-#include "frontpack/io.hpp"
 #include "frontpack/geometry.hpp"
+#include "frontpack/io.hpp"
 #include "frontpack/version.hpp"

@@ -7,8 +7,8 @@ int main(int argc, char** argv) try {
   frontpack::FillOptions options;
   options.radii = frontpack::Radii::uniform(0.005, 0.02);
   const frontpack::Packing packing = frontpack::fill(domain, options);
-  std::cout << packing.disks.size() << " disks, area " << domain.area() << ", "
-            << packing.certificate.dropped << " overlaps\n";
+  std::cout << packing.disks.size() << " disks, area " << domain.area() << ", " << packing.certificate.dropped
+            << " overlaps\n";
 } catch (const frontpack::Error& e) {
   std::cerr << e.what() << "\n";
   return 1;
