@@ -76,9 +76,7 @@ Packing run_fill(const Domain& domain, const FillOptions& options,
     req.clearance = clearance;
     req.max_disks = options.max_disks;
     if (progress) {
-      const std::size_t before = raw.size();
-      req.tick = [&, before](std::size_t total) {
-        (void)before;
+      req.tick = [&](std::size_t total) {
         return progress(Progress{total, std::min(0.99, static_cast<double>(total) / std::max(estimate, 1.0))});
       };
     }

@@ -47,7 +47,12 @@ class Front {
 
  public:
   Front(const FrontRequest& req, Rng& rng, std::vector<Disk>& out, FillStats& stats)
-      : req_(req), rng_(rng), out_(out), stats_(stats), open_(req.method == Method::open) {
+      : req_(req),
+        rng_(rng),
+        out_(out),
+        stats_(stats),
+        open_(req.method == Method::open),
+        budget_(req.max_disks == 0 ? std::numeric_limits<std::size_t>::max() : req.max_disks) {
     // Work in coordinates local to the box's lower-left corner, so that a translated domain
     // gives the same computation (and small numbers for domains far from the origin).
     origin_ = Point{req.box.xmin, req.box.ymin};
@@ -559,7 +564,7 @@ class Front {
   double clearance_ = 0;
   double band_ = 0;
   std::size_t window_ = 5;
-  std::size_t budget_ = std::numeric_limits<std::size_t>::max();
+  std::size_t budget_;
   std::size_t tick_every_ = 1 << 14;
   double ox_ = 0;
   double oy_ = 0;
@@ -574,16 +579,12 @@ class Front {
   double cell_ = 1, inv_cell_ = 1, gx0_ = 0, gy0_ = 0;
   std::size_t gnx_ = 1, gny_ = 1;
   std::vector<std::int32_t> head_;
-
- public:
-  void set_budget(std::size_t budget) { budget_ = budget; }
 };
 
 }  // namespace
 
 FrontResult advance_front(const FrontRequest& req, Rng& rng, std::vector<Disk>& out, FillStats& stats) {
   Front front(req, rng, out, stats);
-  front.set_budget(req.max_disks == 0 ? std::numeric_limits<std::size_t>::max() : req.max_disks);
   return front.run();
 }
 
