@@ -43,6 +43,8 @@ class Front {
   struct Node {
     double x, y, r;
     std::int32_t cell_next;  // next node in the same grid cell
+    std::uint8_t inside;     // centre in the box (the bottom wall counts as inside, side walls not)
+    std::uint8_t blocked;    // the segment starting here is retired
   };
 
  public:
@@ -67,8 +69,6 @@ class Front {
     nodes_.reserve(reserve + kFirstDisk);
     next_.reserve(reserve + kFirstDisk);
     prev_.reserve(reserve + kFirstDisk);
-    on_front_.reserve(reserve + kFirstDisk);
-    blocked_.reserve(reserve + kFirstDisk);
     setup_grid();
   }
 
@@ -118,8 +118,6 @@ class Front {
     // The front and the grid are done with: free them before the output grows (peak memory).
     release(next_);
     release(prev_);
-    release(on_front_);
-    release(blocked_);
     release(head_);
     for (std::size_t i = kFirstDisk; i < nodes_.size(); ++i) {
       out_.push_back(Disk{{origin_.x + nodes_[i].x, origin_.y + nodes_[i].y}, nodes_[i].r});
@@ -146,11 +144,11 @@ class Front {
       link_to = head_[c];
       head_[c] = id;
     }
-    nodes_.push_back(Node{x, y, r, link_to});
+    const bool in =
+        id >= kFirstDisk ? (x >= box_.xmin && x <= box_.xmax && y >= box_.ymin && y <= box_.ymax) : id == kBottom;
+    nodes_.push_back(Node{x, y, r, link_to, static_cast<std::uint8_t>(in ? 1 : 0), 0});
     next_.push_back(kNone);
     prev_.push_back(kNone);
-    on_front_.push_back(0);
-    blocked_.push_back(0);
     return id;
   }
 
@@ -292,15 +290,15 @@ class Front {
       if (!(d2 > 0)) {
         return false;
       }
-      const double d = std::sqrt(d2);
-      const double t = (a * a - b * b + d2) / (2 * d);
+      const double inv_d = 1 / std::sqrt(d2);  // one division instead of three
+      const double t = (a * a - b * b + d2) * (0.5 * inv_d);
       const double h2 = a * a - t * t;
       if (!(h2 >= 0)) {
         return false;  // the two disks are too far apart for one of radius r to touch both
       }
       const double h = open_ ? std::sqrt(h2) : -std::sqrt(h2);  // left (open) or right (closed)
-      const double ux = dx / d;
-      const double uy = dy / d;
+      const double ux = dx * inv_d;
+      const double uy = dy * inv_d;
       px = cn.x + t * ux - h * uy;
       py = cn.y + t * uy + h * ux;
       return true;
@@ -333,19 +331,13 @@ class Front {
   // ------------------------------------------------------------------------------------------
   // Segments: activity (Sec. 2.3) and the front list.
 
-  [[nodiscard]] bool inside(std::int32_t id) const noexcept {
-    if (is_wall(id)) {
-      return id == kBottom;  // the bottom wall lies in the box; the side walls' "centres" do not
-    }
-    const Node& o = nodes_[static_cast<std::size_t>(id)];
-    return o.x >= box_.xmin && o.x <= box_.xmax && o.y >= box_.ymin && o.y <= box_.ymax;
-  }
+  [[nodiscard]] bool inside(std::int32_t id) const noexcept { return nodes_[static_cast<std::size_t>(id)].inside != 0; }
 
   // Sec. 2.3: a segment is inactive when both its disks' centres are outside the box (open
   // form: above the lid, Sec. 3). Inactive segments stay on the front for overlap checks.
   [[nodiscard]] bool segment_active(std::int32_t s) const noexcept {
     const auto i = static_cast<std::size_t>(s);
-    if (blocked_[i] || (open_ && s == kRight)) {
+    if (nodes_[i].blocked != 0 || (open_ && s == kRight)) {
       return false;
     }
     return inside(s) || inside(next_[i]);
@@ -355,7 +347,7 @@ class Front {
   void link(std::int32_t s, std::int32_t t) {
     next_[static_cast<std::size_t>(s)] = t;
     prev_[static_cast<std::size_t>(t)] = s;
-    blocked_[static_cast<std::size_t>(s)] = 0;
+    nodes_[static_cast<std::size_t>(s)].blocked = 0;
     active_ += segment_active(s) ? 1U : 0U;
   }
 
@@ -371,7 +363,6 @@ class Front {
     unlink_segment(before);
     for (std::int32_t v = first;; v = next_[static_cast<std::size_t>(v)]) {
       unlink_segment(v);
-      on_front_[static_cast<std::size_t>(v)] = 0;
       --front_size_;
       if (v == last) {
         break;
@@ -382,7 +373,7 @@ class Front {
 
   void block(std::int32_t s) {
     unlink_segment(s);
-    blocked_[static_cast<std::size_t>(s)] = 1;
+    nodes_[static_cast<std::size_t>(s)].blocked = 1;
     ++stats_.blocked_segments;
   }
 
@@ -474,7 +465,6 @@ class Front {
         if (!overlaps_anything(px, py, r, c, n)) {
           // Case (a): accept; the front becomes ... c -> i -> n ...
           const std::int32_t i = add_node(px, py, r);
-          on_front_[static_cast<std::size_t>(i)] = 1;
           ++front_size_;
           unlink_segment(c);
           link(c, i);
@@ -526,9 +516,6 @@ class Front {
       return kNone;
     }
     const std::int32_t d3 = add_node(px, py, r3);
-    for (const std::int32_t d : {d1, d2, d3}) {
-      on_front_[static_cast<std::size_t>(d)] = 1;
-    }
     front_size_ = 3;
     ox_ = (nodes_[3].x + nodes_[4].x + nodes_[5].x) / 3;
     oy_ = (nodes_[3].y + nodes_[4].y + nodes_[5].y) / 3;
@@ -540,9 +527,6 @@ class Front {
 
   // Sec. 3: the open front Bl -> Bb -> Br; the first active segment Bl -> Bb.
   std::int32_t start_open() {
-    for (const std::int32_t w : {kLeft, kBottom, kRight}) {
-      on_front_[static_cast<std::size_t>(w)] = 1;
-    }
     front_size_ = 3;
     next_[kRight] = kLeft;  // closes the list; Br -> Bl is never a segment
     prev_[kLeft] = kRight;
@@ -571,7 +555,6 @@ class Front {
 
   std::vector<Node> nodes_;
   std::vector<std::int32_t> next_, prev_;
-  std::vector<std::uint8_t> on_front_, blocked_;
   std::size_t active_ = 0;
   std::size_t front_size_ = 0;
   std::int32_t cur_after_failure_ = kNone;
