@@ -8,10 +8,10 @@
 //
 // Overlap detection. The paper checks the new disk against at most M front disks on either side
 // of the active segment (Sec. 2.4.3), which misses overlaps with disks further along the front or
-// already enclosed by it. Here a uniform grid over all placed disks finds every disk the new one
-// would overlap; the window walk then only decides which case (b)-(d) applies. An overlap with a
-// disk the walk does not reach (beyond M, or enclosed) retires the segment ("blocked"), so the
-// generator never emits an overlap and every step makes progress.
+// already enclosed by it. Here the window walk comes first, as in the paper, and decides cases
+// (b)-(d); when the window is clear, a uniform grid over all placed disks is scanned for any other
+// overlap. An overlap the walk does not reach (beyond M, or enclosed) retires the segment
+// ("blocked"), so the generator never emits an overlap and every step makes progress.
 
 #include "front.hpp"
 
