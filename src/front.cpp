@@ -478,13 +478,14 @@ class Front {
         return kNone;
       }
       ++stats_.cuts;
-      // The paper's index typos are corrected here (docs/design.md): k is the disk before j,
-      // v the disk after u; in case (d) j is the subsequent and u the preceding disk.
-      if (j != kNone && j != n) {
+      // The paper's index typos are corrected here (shared/design.md, "The paper, read closely"):
+      // k is the disk before j, v the disk after u; in case (d) j is the subsequent and u the
+      // preceding disk. The walks never return c or n, so each cut removes at least one disk.
+      if (j != kNone) {
         cut(n, prev_[static_cast<std::size_t>(j)]);  // case (b): delete n..k, join c -> j
         n = j;
       }
-      if (u != kNone && u != c) {
+      if (u != kNone) {
         cut(next_[static_cast<std::size_t>(u)], c);  // case (c): delete v..c, join u -> n
         c = u;
       }

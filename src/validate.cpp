@@ -1,7 +1,7 @@
 // Validation of polygonal domains by the OGC Simple Features rules, decided exactly.
 //
 // Why not CGAL::is_valid_polygon_with_holes: its hole test is quadratic in practice (measured
-// 18-24 s for 30k edges, 459 s for 100k, see docs/design.md) and it prints. Here every pair of
+// 18-24 s for 30k edges, 459 s for 100k, see shared/design.md) and it prints. Here every pair of
 // edges whose boxes meet is found by CGAL::box_self_intersection_d and classified with exact
 // orientation tests; ring nesting is decided by exact ray parity through the edge grid; and the
 // connectivity of each polygon's interior follows from the graph of touching rings.

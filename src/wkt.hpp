@@ -1,7 +1,7 @@
 // A strict WKT reader for 2D POLYGON and MULTIPOLYGON with exact error positions.
 //
 // We do not hand user text to CGAL's WKT reader: in CGAL 5.5 it crashes on `POLYGON EMPTY`, traps
-// on NaN with Epeck, and silently accepts unclosed rings (see docs/design.md). This reader checks
+// on NaN with Epeck, and silently accepts unclosed rings (see shared/design.md). This reader checks
 // the grammar only; geometric validity is the Domain's job.
 #pragma once
 
