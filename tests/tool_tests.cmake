@@ -12,7 +12,7 @@ frontpack_tool_test(info_concave 0 "polygons: +1.*area: +0.6875" info ${S}/conca
 frontpack_tool_test(info_islands 0 "polygons: +4.*holes: +1" info ${S}/islands.wkt)
 frontpack_tool_test(info_inline_wkt 0 "area: +2" info --wkt "POLYGON((0 0,2 0,2 1,0 1,0 0))")
 frontpack_tool_test(help 0 "Example:.*frontpack info shapes/concave_polygon.wkt" info --help)
-frontpack_tool_test(version 0 "0\\.1\\.0" --version)
+frontpack_tool_test(version 0 "0\\.2\\.0" --version)
 frontpack_tool_test(no_subcommand 1 "subcommand" "")
 frontpack_tool_test(unknown_option 1 "--bogus" info --bogus ${S}/unit_square.wkt)
 frontpack_tool_test(missing_file 2 "cannot open '/nonexistent.wkt': No such file or directory" info /nonexistent.wkt)
