@@ -94,7 +94,7 @@ struct FillOptions {
   std::optional<Point> start;
   /// Tangent disks are placed at centre distance r1 + r2 + clearance. 0 (the default) means
   /// automatic: 64 * 2^-52 * (largest |coordinate| + 5 rmax), a few ulps of the coordinates, so
-  /// that rounding never makes tangent disks overlap (docs/robustness.md); about 1.4e-14 for a
+  /// that rounding never makes tangent disks overlap (docs/robustness.md); about 2e-14 for a
   /// unit domain. A value you give must be at least 16 * 2^-52 * (largest |coordinate| + 5 rmax)
   /// (else OptionError); give the same value to make two runs comparable (e.g. translated domains).
   double clearance = 0;
