@@ -87,7 +87,8 @@ std::string read_file(const std::filesystem::path& path) {
   return text;
 }
 
-Domain from_wkt_text(std::string_view text, const std::string& source_name, auto make) {
+// Parses and validates WKT text; `source_name` (a file name, or empty) goes into the messages.
+std::shared_ptr<const Domain::Impl> from_wkt_text(std::string_view text, const std::string& source_name) {
   std::vector<detail::ParsedPolygon> parsed;
   try {
     parsed = detail::parse_wkt(text);
@@ -111,7 +112,7 @@ Domain from_wkt_text(std::string_view text, const std::string& source_name, auto
     return " (" + (source_name.empty() ? std::string() : source_name + ":") + "line " + std::to_string(pos.line) +
            ", column " + std::to_string(pos.column) + ")";
   };
-  return make(build(parts, true, where));
+  return build(parts, true, where);
 }
 
 void append_ring(std::string& out, const Ring& ring) {
@@ -133,12 +134,12 @@ void append_ring(std::string& out, const Ring& ring) {
 Domain::Domain(std::shared_ptr<const Impl> impl) noexcept : impl_(std::move(impl)) {}
 
 Domain Domain::from_wkt(std::string_view wkt) {
-  return from_wkt_text(wkt, {}, [](std::shared_ptr<const Impl> impl) { return Domain(std::move(impl)); });
+  return Domain(from_wkt_text(wkt, {}));
 }
 
 Domain Domain::from_wkt_file(const std::filesystem::path& path) {
   const std::string text = read_file(path);
-  return from_wkt_text(text, path.string(), [](std::shared_ptr<const Impl> impl) { return Domain(std::move(impl)); });
+  return Domain(from_wkt_text(text, path.string()));
 }
 
 Domain Domain::from_polygons(std::vector<Polygon> polygons) {

@@ -148,28 +148,39 @@ void EdgeGrid::build(std::span<const Point> vertices, std::span<const std::uint3
   state_.assign(cells, kMixed);
 }
 
+void EdgeGrid::append_row_edges(std::size_t i, std::size_t k, std::size_t j, std::vector<std::uint32_t>& out) const {
+  const auto first = static_cast<std::ptrdiff_t>(out.size());
+  for (std::size_t c = i; c < k; ++c) {
+    const auto list = edges_of(cell(c, j));
+    out.insert(out.end(), list.begin(), list.end());
+  }
+  std::sort(out.begin() + first, out.end());
+  out.erase(std::unique(out.begin() + first, out.end()), out.end());
+}
+
+bool EdgeGrid::crosses_right_of(std::uint32_t e, Point p, Point& lo, Point& hi) const {
+  lo = v_[e];
+  hi = v_[next_[e]];
+  if ((lo.y > p.y) == (hi.y > p.y)) {
+    return false;  // half-open rule: exactly one endpoint strictly above the line
+  }
+  if (lo.y > hi.y) {
+    std::swap(lo, hi);
+  }
+  return orientation(lo, hi, p) > 0;  // p is left of the upward edge
+}
+
 bool EdgeGrid::odd_crossings(Point p, std::size_t i, std::size_t k, std::size_t j,
                              std::vector<std::uint32_t>& scratch) const {
   scratch.clear();
-  for (std::size_t c = i; c < k; ++c) {
-    const auto list = edges_of(cell(c, j));
-    scratch.insert(scratch.end(), list.begin(), list.end());
-  }
-  std::sort(scratch.begin(), scratch.end());
-  scratch.erase(std::unique(scratch.begin(), scratch.end()), scratch.end());
-  const Point t{k < nx_ ? xs_[k] : xs_[nx_], p.y};
+  append_row_edges(i, k, j, scratch);
+  const Point t{xs_[std::min(k, nx_)], p.y};
   bool odd = false;
   for (const std::uint32_t e : scratch) {
-    Point lo = v_[e];
-    Point hi = v_[next_[e]];
-    if ((lo.y > p.y) == (hi.y > p.y)) {
-      continue;  // half-open rule: exactly one endpoint strictly above the line
-    }
-    if (lo.y > hi.y) {
-      std::swap(lo, hi);
-    }
-    // The crossing lies strictly between p and t: p is left of the upward edge, t right of it.
-    if (orientation(lo, hi, p) > 0 && orientation(lo, hi, t) < 0) {
+    Point lo;
+    Point hi;
+    // The crossing lies strictly between p and t: right of p, left of t.
+    if (crosses_right_of(e, p, lo, hi) && orientation(lo, hi, t) < 0) {
       odd = !odd;
     }
   }
@@ -278,27 +289,14 @@ void EdgeGrid::edges_crossing_ray(Point p, std::vector<std::uint32_t>& out) cons
   if (!(p.y >= ys_.front() && p.y < ys_.back()) || !(p.x < xs_.back())) {
     return;
   }
-  const std::size_t j = row(p.y);
   const std::size_t first = out.size();
-  for (std::size_t i = column(p.x); i < nx_; ++i) {
-    const auto list = edges_of(cell(i, j));
-    out.insert(out.end(), list.begin(), list.end());
-  }
-  std::sort(out.begin() + static_cast<std::ptrdiff_t>(first), out.end());
-  out.erase(std::unique(out.begin() + static_cast<std::ptrdiff_t>(first), out.end()), out.end());
+  append_row_edges(column(p.x), nx_, row(p.y), out);
   std::size_t kept = first;
   for (std::size_t n = first; n < out.size(); ++n) {
-    const std::uint32_t e = out[n];
-    Point lo = v_[e];
-    Point hi = v_[next_[e]];
-    if ((lo.y > p.y) == (hi.y > p.y)) {
-      continue;
-    }
-    if (lo.y > hi.y) {
-      std::swap(lo, hi);
-    }
-    if (orientation(lo, hi, p) > 0) {
-      out[kept++] = e;
+    Point lo;
+    Point hi;
+    if (crosses_right_of(out[n], p, lo, hi)) {
+      out[kept++] = out[n];
     }
   }
   out.resize(kept);

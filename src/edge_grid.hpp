@@ -40,10 +40,6 @@ class EdgeGrid {
   /// skipped: the caller must not rely on them. Each edge appears at most once.
   void edges_crossing_ray(Point p, std::vector<std::uint32_t>& out) const;
 
-  [[nodiscard]] std::size_t columns() const noexcept { return nx_; }
-  [[nodiscard]] std::size_t rows() const noexcept { return ny_; }
-  [[nodiscard]] std::size_t listed_edges() const noexcept { return cell_edges_.size(); }
-
  private:
   static constexpr std::uint8_t kOutside = 0;
   static constexpr std::uint8_t kMixed = 1;
@@ -57,6 +53,11 @@ class EdgeGrid {
   }
   template <class F>
   void rasterize(std::uint32_t edge, F&& emit) const;
+  // Appends to `out` the edges listed in cells [i, k) of row j, each once.
+  void append_row_edges(std::size_t i, std::size_t k, std::size_t j, std::vector<std::uint32_t>& out) const;
+  // Whether edge e crosses the horizontal line through p (half-open rule: exactly one endpoint
+  // strictly above it) to the right of p; lo and hi receive its endpoints, lower first. Exact.
+  bool crosses_right_of(std::uint32_t e, Point p, Point& lo, Point& hi) const;
   // Parity of the crossings of the horizontal segment p -> (X[k], p.y) with the edges listed in
   // cells [i, k) of row j. scratch is reused storage.
   [[nodiscard]] bool odd_crossings(Point p, std::size_t i, std::size_t k, std::size_t j,

@@ -39,6 +39,17 @@ void check_options(const FillOptions& o) {
   }
 }
 
+// Keeps the disks whose flag equals `keep`, in order, in place (no second copy of the disks).
+void keep_where(std::vector<Disk>& disks, const std::vector<std::uint8_t>& flag, std::uint8_t keep) {
+  std::size_t kept = 0;
+  for (std::size_t i = 0; i < disks.size(); ++i) {
+    if (flag[i] == keep) {
+      disks[kept++] = disks[i];
+    }
+  }
+  disks.resize(kept);
+}
+
 double seconds_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
@@ -89,18 +100,11 @@ Packing run_fill(const Domain& domain, const FillOptions& options,
   t0 = std::chrono::steady_clock::now();
 
   // Certification. Sec. 2.4.5: disks not entirely inside the domain are culled (exactly).
-  // Compacted in place: no second copy of the disks.
   packing.certificate.generated = raw.size();
   {
     std::vector<std::uint8_t> inside(raw.size());
     domain.contains(raw, inside);
-    std::size_t kept = 0;
-    for (std::size_t i = 0; i < raw.size(); ++i) {
-      if (inside[i] != 0) {
-        raw[kept++] = raw[i];
-      }
-    }
-    raw.resize(kept);
+    keep_where(raw, inside, 1);
   }
   packing.certificate.culled = packing.certificate.generated - raw.size();
   packing.stats.seconds_cull = seconds_since(t0);
@@ -118,13 +122,7 @@ Packing run_fill(const Domain& domain, const FillOptions& options,
         ++packing.certificate.dropped;
       }
     }
-    std::size_t kept = 0;
-    for (std::size_t i = 0; i < raw.size(); ++i) {
-      if (drop[i] == 0) {
-        raw[kept++] = raw[i];
-      }
-    }
-    raw.resize(kept);
+    keep_where(raw, drop, 0);
   }
   raw.shrink_to_fit();
   packing.disks = std::move(raw);

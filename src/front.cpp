@@ -103,11 +103,12 @@ class Front {
         continue;
       }
       skips = 0;
-      const std::int32_t placed_node = place_on(cur, r);
-      if (placed_node == kNone) {
-        cur = advance(cur_after_failure_);
+      const Placement placement = place_on(cur, r);
+      if (placement.node == kNone) {
+        cur = advance(placement.retired);  // the radius stays for the next segment
         continue;
       }
+      const std::int32_t placed_node = placement.node;
       r = draw();
       // Visit order. Closed form (Fig. 4): after D4 on D1 -> D2, the next segment is D2 -> D3,
       // the one after the new disk's. Open form (Sec. 3): along the layer (D1 -> Bb after D1),
@@ -430,9 +431,13 @@ class Front {
 
   // ------------------------------------------------------------------------------------------
   // Sec. 2.2: placing a disk of radius r on segment c -> n, with cases (a)-(d).
-  // Returns the new node, or kNone after retiring a segment (then cur_after_failure_ is where the
-  // sweep goes on).
-  std::int32_t place_on(std::int32_t c, double r) {
+  // Returns the new node, or kNone and the segment it retired (after cuts, not necessarily the
+  // one it started on): the sweep goes on after it.
+  struct Placement {
+    std::int32_t node;     // the new disk, or kNone
+    std::int32_t retired;  // with kNone: the segment that was blocked
+  };
+  Placement place_on(std::int32_t c, double r) {
     std::int32_t n = next_[static_cast<std::size_t>(c)];
     for (;;) {
       ++stats_.attempts;
@@ -440,8 +445,7 @@ class Front {
       double py = 0;
       if (!tangent(c, n, r, px, py)) {
         block(c);
-        cur_after_failure_ = c;
-        return kNone;
+        return {kNone, c};
       }
       // Which front disk overlapping the new one comes first after n (subsequent, j) and
       // before c (preceding, u), within the window M and (closed form) half a turn about O.
@@ -469,13 +473,12 @@ class Front {
           unlink_segment(c);
           link(c, i);
           link(i, n);
-          return i;
+          return {i, kNone};
         }
         // Every overlapped disk is off the window or enclosed by the front: the paper's window
         // check would have missed it. Retire the segment rather than emit an overlap.
         block(c);
-        cur_after_failure_ = c;
-        return kNone;
+        return {kNone, c};
       }
       ++stats_.cuts;
       // The paper's index typos are corrected here (shared/design.md, "The paper, read closely"):
@@ -558,7 +561,6 @@ class Front {
   std::vector<std::int32_t> next_, prev_;
   std::size_t active_ = 0;
   std::size_t front_size_ = 0;
-  std::int32_t cur_after_failure_ = kNone;
 
   double cell_ = 1, inv_cell_ = 1, gx0_ = 0, gy0_ = 0;
   std::size_t gnx_ = 1, gny_ = 1;
