@@ -47,6 +47,15 @@ InvalidDomainError::InvalidDomainError(Kind kind, const std::string& detail, Sit
                                        std::optional<Point> where)
     : Error("invalid domain: " + detail), kind_(kind), site_(site), other_(other), where_(where) {}
 
+DiskFileError::DiskFileError(Kind kind, std::string detail, std::string source, std::size_t line, std::size_t column)
+    : Error(source + ':' + std::to_string(line) + (column > 0 ? ':' + std::to_string(column) : std::string()) + ": " +
+            detail),
+      kind_(kind),
+      detail_(std::move(detail)),
+      source_(std::move(source)),
+      line_(line),
+      column_(column) {}
+
 const char* to_string(WktError::Kind kind) noexcept {
   switch (kind) {
     case WktError::Kind::syntax: return "syntax";
@@ -74,6 +83,22 @@ const char* to_string(InvalidDomainError::Kind kind) noexcept {
     case K::nested_holes: return "nested_holes";
     case K::overlapping_parts: return "overlapping_parts";
     case K::disconnected_interior: return "disconnected_interior";
+  }
+  return "unknown";
+}
+
+const char* to_string(DiskFileError::Kind kind) noexcept {
+  using K = DiskFileError::Kind;
+  switch (kind) {
+    case K::empty_file: return "empty_file";
+    case K::missing_header: return "missing_header";
+    case K::blank_line: return "blank_line";
+    case K::field_count: return "field_count";
+    case K::bad_number: return "bad_number";
+    case K::non_finite: return "non_finite";
+    case K::bad_radius: return "bad_radius";
+    case K::nonzero_z: return "nonzero_z";
+    case K::unsupported_format: return "unsupported_format";
   }
   return "unknown";
 }

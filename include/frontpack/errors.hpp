@@ -109,8 +109,45 @@ class InvalidDomainError : public Error {
   std::optional<Point> where_;
 };
 
+/// A disk file (CSV, Yade text) that does not follow its format. what() reads
+/// "SOURCE:LINE: DETAIL" or "SOURCE:LINE:COLUMN: DETAIL", e.g.
+/// "disks.csv:17: expected 3 comma-separated numbers, got 'abc,1'".
+///
+/// line() is 1-based; column() is the 1-based character column of the offending field, or 0 when
+/// the problem is the whole line or file.
+class DiskFileError : public Error {
+ public:
+  enum class Kind {
+    empty_file,          ///< no line at all
+    missing_header,      ///< a CSV whose first line is not "x,y,r"
+    blank_line,          ///< an empty (or whitespace-only) line
+    field_count,         ///< not exactly the number of fields the format has
+    bad_number,          ///< a field that is not a decimal number, or is out of the double range
+    non_finite,          ///< nan or inf
+    bad_radius,          ///< a radius <= 0
+    nonzero_z,           ///< a Yade z coordinate other than 0
+    unsupported_format,  ///< a Yade "#format" other than x_y_z_r
+  };
+  DiskFileError(Kind kind, std::string detail, std::string source, std::size_t line, std::size_t column = 0);
+
+  [[nodiscard]] Kind kind() const noexcept { return kind_; }
+  /// The message without its "source:line:" prefix.
+  [[nodiscard]] const std::string& detail() const noexcept { return detail_; }
+  [[nodiscard]] const std::string& source() const noexcept { return source_; }
+  [[nodiscard]] std::size_t line() const noexcept { return line_; }
+  [[nodiscard]] std::size_t column() const noexcept { return column_; }
+
+ private:
+  Kind kind_;
+  std::string detail_;
+  std::string source_;
+  std::size_t line_;
+  std::size_t column_;
+};
+
 /// Name of an error kind, as used in messages and in the test corpus (e.g. "self_intersection").
 [[nodiscard]] const char* to_string(WktError::Kind kind) noexcept;
 [[nodiscard]] const char* to_string(InvalidDomainError::Kind kind) noexcept;
+[[nodiscard]] const char* to_string(DiskFileError::Kind kind) noexcept;
 
 }  // namespace frontpack

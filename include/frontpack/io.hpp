@@ -1,25 +1,129 @@
-// frontpack: writing packings.
+// frontpack: writing and reading packings (CSV, Yade, LAMMPS, VTK PolyData, SVG).
+//
+// Round-trip guarantee: every writer except SVG prints each double in its shortest decimal form
+// that reads back as exactly the same double (std::to_chars), so a packing certified in memory is
+// certified in the file too: read_csv and read_yade (and LAMMPS, ParaView, Yade, Python's float())
+// get back the very bits that were written. Units are those of the domain's coordinates; frontpack
+// never scales.
+//
+// Errors: OptionError (declared in frontpack/fill.hpp) for an unknown format or a bad writer
+// option, IoError (with the OS's reason) for a file that cannot be read or written, DiskFileError
+// (with file, line and column) for a malformed disk file.
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
 #include <iosfwd>
 #include <span>
+#include <string_view>
+#include <vector>
 
 #include "frontpack/domain.hpp"
+#include "frontpack/errors.hpp"
+#include "frontpack/fill.hpp"  // OptionError
 #include "frontpack/geometry.hpp"
 
 namespace frontpack {
+
+/// The file formats of the library's writers.
+enum class Format : std::uint8_t {
+  csv,     ///< "x,y,r" with a header line (write_csv, read_csv)
+  yade,    ///< Yade text for ymport.textExt(file, format='x_y_z_r') (write_yade, read_yade)
+  lammps,  ///< LAMMPS data file for atom_style sphere (write_lammps)
+  vtp,     ///< VTK XML PolyData for ParaView (write_vtp)
+  svg,     ///< a picture (write_svg)
+};
+
+/// "csv", "yade", "lammps", "vtp" or "svg".
+[[nodiscard]] const char* to_string(Format format) noexcept;
+
+/// The format for a file name's extension, compared case-insensitively: .csv -> csv; .txt and
+/// .yade -> yade (Yade's own examples name these files .txt); .data and .lmp -> lammps; .vtp;
+/// .svg. Throws OptionError naming the extension and listing the known ones (for .png, saying that
+/// PNG pictures are drawn by the frontpack tool, not by the library).
+[[nodiscard]] Format format_from_path(const std::filesystem::path& path);
+
+/// The format named `name` (as to_string gives it, for a --format option). Throws OptionError
+/// listing the known names.
+[[nodiscard]] Format format_from_name(std::string_view name);
 
 struct SvgStyle {
   double width_px = 800;       ///< picture width; the height follows the domain's aspect ratio
   bool colour_by_size = true;  ///< small disks light, large disks dark
 };
 
-/// A minimal SVG picture: the domain's outline (holes included) and the disks.
+/// Options of write_lammps.
+struct LammpsOptions {
+  double density = 1.0;        ///< per-atom density column (LAMMPS: mass = density * (4/3) pi r^3); finite, > 0
+  std::int64_t atom_type = 1;  ///< type of every atom, >= 1; the header declares this many atom types
+};
+
+/// Options of write_file, per format.
+struct WriteOptions {
+  SvgStyle svg;
+  LammpsOptions lammps;
+};
+
+/// A minimal SVG picture: the domain's outline (holes included) and the disks. Coordinates are
+/// rounded to 0.001 px: a picture, not a data file.
 void write_svg(std::ostream& out, const Domain& domain, std::span<const Disk> disks, const SvgStyle& style = {});
 
-/// CSV "x,y,r" with a header; numbers in shortest round-trip form (reading them back gives the
-/// same doubles, so a certificate holds for the file).
+/// CSV: a header line "x,y,r", then one line "x,y,r" per disk (centre and radius), in order.
 void write_csv(std::ostream& out, std::span<const Disk> disks);
+
+/// Yade text for `ymport.textExt(file, format='x_y_z_r')` (or `ymport.text(file)`): a first line
+/// "#format x_y_z_r", then one line "x y 0 r" per disk, in order (centre, z = 0, radius), separated
+/// by single spaces, no blank lines (textExt fails on a blank line).
+void write_yade(std::ostream& out, std::span<const Disk> disks);
+
+/// LAMMPS data file for `atom_style sphere` (read with `read_data`; with `dimension 2` use
+/// `boundary f f p` or `p p p`):
+///
+///     <title line>
+///     N atoms
+///     T atom types
+///     xlo xhi xlo xhi          (the box)
+///     ylo yhi ylo yhi
+///     -R R zlo zhi             (R = largest radius, or 0.5 with no disks: straddles 0 as 2D requires)
+///     Atoms # sphere
+///     id type diameter density x y z     (one line per disk: id = index + 1, diameter = 2 r, z = 0)
+///
+/// 2 r is exact in binary, so r = diameter / 2 reads back exactly. Throws OptionError if the box
+/// does not contain every disk fully (decided exactly: x - r >= xmin and x + r <= xmax in floating
+/// point are exact tests, because rounding is monotone and the bounds are doubles), or if an option
+/// is out of range.
+void write_lammps(std::ostream& out, std::span<const Disk> disks, const Box& box, const LammpsOptions& options = {});
+
+/// VTK XML PolyData (ASCII, version 1.0), for ParaView: one point per disk centre (Float64, z = 0),
+/// one vertex cell per point, and point data `radius` (Float64, the active scalars: use it as the
+/// scale array of the Point Gaussian representation or of a Glyph filter for true sizes) and `id`
+/// (Int64, the disk's 0-based index in `disks`).
+void write_vtp(std::ostream& out, std::span<const Disk> disks);
+
+/// Writes `disks` (and, for SVG, the domain; for LAMMPS, the domain's bounding box as the box) to
+/// `path` in `format`. The text goes to a new temporary file beside `path`, is flushed to disk,
+/// and is renamed over `path` in one step: readers see the old file or the complete new one,
+/// never a partial file. On failure the temporary file is removed and IoError names the path and
+/// the OS's reason; OptionError as the writers.
+void write_file(const std::filesystem::path& path, Format format, const Domain& domain, std::span<const Disk> disks,
+                const WriteOptions& options = {});
+
+/// Reads a CSV written by write_csv. Strict: the first line must be the header "x,y,r"; then
+/// exactly three comma-separated numbers per line (spaces or tabs around a number are allowed;
+/// CRLF line ends are accepted; no blank lines); every number finite; every radius > 0. Numbers
+/// are parsed exactly and independently of the locale (std::from_chars: "1.5", "-2e-3", no "+").
+/// `source_name` (a file name) goes into the messages. Throws DiskFileError naming the line.
+[[nodiscard]] std::vector<Disk> read_csv(std::istream& in, std::string_view source_name);
+
+/// Reads Yade text as written by write_yade: lines of four numbers "x y z r" separated by spaces
+/// or tabs, where z must be 0 (frontpack's disks are planar); lines starting with '#' are
+/// comments, except "#format F", where F must be x_y_z_r (the default of textExt). Numbers and
+/// the other rules as read_csv (no header required). Throws DiskFileError naming the line.
+[[nodiscard]] std::vector<Disk> read_yade(std::istream& in, std::string_view source_name);
+
+/// Reads a disk file, choosing the reader by format_from_path (CSV or Yade; other formats throw
+/// OptionError). Throws IoError (with the OS's reason) if the file cannot be read, DiskFileError
+/// if it is malformed.
+[[nodiscard]] std::vector<Disk> read_disks(const std::filesystem::path& path);
 
 }  // namespace frontpack
