@@ -160,6 +160,15 @@ struct CertifyReport {
   Certificate certificate;
   std::vector<std::size_t> outside;                              ///< indices of disks not inside
   std::vector<std::pair<std::size_t, std::size_t>> overlapping;  ///< index pairs (i < j), sorted
+  /// How bad it is, for reports. Which disks are outside and which pairs overlap is decided
+  /// exactly; these figures are computed in floating point from those decisions (approximate).
+  /// The pair of `overlapping` with the deepest overlap r_i + r_j - |c_i - c_j| (none if empty).
+  std::optional<std::pair<std::size_t, std::size_t>> deepest_overlap;
+  double deepest_overlap_depth = 0;
+  /// The disk of `outside` reaching farthest out: the largest r - d, d the signed distance from
+  /// its centre to the boundary (positive inside); infinity for a non-finite or negative disk.
+  std::optional<std::size_t> farthest_outside;
+  double farthest_outside_by = 0;
 };
 
 /// Certifies any set of disks against a domain, exactly: which disks are not inside the closed
