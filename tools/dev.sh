@@ -14,6 +14,7 @@ packages=(
   g++ cmake ninja-build pkg-config
   libcgal-dev libboost-dev libgmp-dev libmpfr-dev
   libgtest-dev libgmock-dev libbenchmark-dev libcli11-dev
+  libcairo2-dev nlohmann-json3-dev
 )
 
 install_packages() {
