@@ -16,6 +16,8 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev libcli11-dev
   libcairo2-dev nlohmann-json3-dev
 )
+# The programs that read our files back in the real-reader tests (tests/readers/): `test` only.
+test_packages=(lammps python3 python3-vtk9 yade)
 
 install_packages() {
   local missing=()
@@ -58,7 +60,9 @@ case "${1:-}" in
     build release
     ;;
   test)
+    packages+=("${test_packages[@]}")
     install_packages
+    export FRONTPACK_REQUIRE_READERS=1  # a reader test may not skip here
     build asan
     run_tests asan
     build release

@@ -1,0 +1,33 @@
+# Real-reader tests: a packing written by frontpack is read back by LAMMPS (read_data), VTK
+# (vtkXMLPolyDataReader) and Yade (ymport.textExt), and every disk must come back bit-identical
+# (tests/readers/check_readers.py). The programs are Debian packages that only `tools/dev.sh test`
+# installs (lammps, python3-vtk9, yade): the tests are always registered; without the program a
+# test is skipped (exit 77), unless FRONTPACK_REQUIRE_READERS=1 (as dev.sh test sets), where it
+# fails.
+add_executable(frontpack_write_formats ${CMAKE_CURRENT_LIST_DIR}/write_formats.cpp)
+target_link_libraries(frontpack_write_formats PRIVATE frontpack::frontpack)
+frontpack_target_settings(frontpack_write_formats)
+
+# Debian's Python modules (vtk from python3-vtk9) are installed for Debian's interpreter, which
+# may not be the first python3 on PATH (pyenv, a virtual environment).
+find_program(FRONTPACK_DEBIAN_PYTHON3 python3 PATHS /usr/bin NO_DEFAULT_PATH)
+find_program(FRONTPACK_PYTHON3 python3)
+if(FRONTPACK_DEBIAN_PYTHON3)
+  set(frontpack_reader_python ${FRONTPACK_DEBIAN_PYTHON3})
+else()
+  set(frontpack_reader_python ${FRONTPACK_PYTHON3})
+endif()
+
+foreach(reader lammps vtk yade)
+  if(frontpack_reader_python)
+    add_test(NAME readers.${reader}
+      COMMAND ${frontpack_reader_python} ${CMAKE_CURRENT_LIST_DIR}/check_readers.py ${reader}
+              $<TARGET_FILE:frontpack_write_formats> ${PROJECT_SOURCE_DIR}/shapes/l_shape.wkt
+              ${CMAKE_CURRENT_BINARY_DIR}/readers/${reader})
+  else()
+    # No Python at all: the same skip-or-fail rule, in the shell.
+    add_test(NAME readers.${reader}
+      COMMAND sh -c "echo 'python3 is not installed'; test \"$FRONTPACK_REQUIRE_READERS\" = 1 && exit 1; exit 77")
+  endif()
+  set_tests_properties(readers.${reader} PROPERTIES SKIP_RETURN_CODE 77 TIMEOUT 300 LABELS readers)
+endforeach()
