@@ -22,14 +22,9 @@
 #include "frontpack/domain.hpp"
 #include "frontpack/errors.hpp"
 #include "frontpack/geometry.hpp"
+#include "frontpack/sizes.hpp"
 
 namespace frontpack {
-
-/// Invalid fill options (a radius spec, a window, a limit). The message names the option.
-class OptionError : public Error {
- public:
-  using Error::Error;
-};
 
 /// A request that would exceed FillOptions::max_disks; the message gives the estimate.
 class LimitError : public Error {
@@ -39,39 +34,6 @@ class LimitError : public Error {
 
  private:
   std::size_t estimate_;
-};
-
-/// A radius distribution. Radii are drawn by inverse transform from a 53-bit uniform variate of
-/// frontpack's own generator, so a seed gives the same radii on every compiler and platform.
-/// This is the seam through which further distributions plug in.
-class RadiusDistribution {
- public:
-  virtual ~RadiusDistribution() = default;
-  /// The radius at cumulative probability u in [0, 1). Must be monotone in u and within
-  /// [min(), max()].
-  [[nodiscard]] virtual double quantile(double u) const = 0;
-  [[nodiscard]] virtual double min() const = 0;
-  [[nodiscard]] virtual double max() const = 0;
-  /// E[r^2], for estimating disk counts.
-  [[nodiscard]] virtual double mean_square() const = 0;
-};
-
-/// A radius specification (a value type sharing an immutable distribution).
-class Radii {
- public:
-  /// Radii uniform in [rmin, rmax] (the paper's); 0 < rmin <= rmax, finite. Throws OptionError.
-  [[nodiscard]] static Radii uniform(double rmin, double rmax);
-  /// Every radius equal to r > 0. Throws OptionError.
-  [[nodiscard]] static Radii constant(double r);
-  /// Any distribution (must satisfy RadiusDistribution's contract; its bounds are checked).
-  [[nodiscard]] static Radii custom(std::shared_ptr<const RadiusDistribution> distribution);
-
-  [[nodiscard]] const RadiusDistribution& distribution() const;
-  [[nodiscard]] double min() const { return distribution().min(); }
-  [[nodiscard]] double max() const { return distribution().max(); }
-
- private:
-  std::shared_ptr<const RadiusDistribution> d_;
 };
 
 enum class Method : std::uint8_t {

@@ -7,4 +7,6 @@
 #include "frontpack/fill.hpp"
 #include "frontpack/geometry.hpp"
 #include "frontpack/io.hpp"
+#include "frontpack/sizes.hpp"
+#include "frontpack/stats.hpp"
 #include "frontpack/version.hpp"

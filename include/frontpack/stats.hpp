@@ -1,0 +1,145 @@
+// frontpack: the statistics a DEM user checks a packing by (any packing, not only frontpack's).
+//
+//   const frontpack::PackingStats s = frontpack::measure(domain, packing.disks, {.requested = options.radii});
+//   // s.packing_fraction, s.interior_fraction, s.mean_coordination, s.rattlers, s.sizes.ks_area ...
+//
+// Definitions (docs/distributions.md has them with measured figures):
+// - Packing fraction: total disk area / domain area. Disks are taken as given (inside the domain,
+//   not overlapping: certify() checks that); nothing is clipped. Void ratio: (1 - phi) / phi.
+// - Band and interior: the band is the set of points of the domain within band_width (default
+//   2 rmax) of the boundary, the interior the rest of the domain. Their packing fractions (the
+//   fraction of the region covered by disks) are estimated by sampling: about `samples` points on
+//   a jittered lattice over the domain's bounding box (one point per lattice cell, at a
+//   deterministic pseudo-random position in it: stratified sampling, no aliasing with lattice
+//   packings), each classified exactly as inside the domain (Domain::locate), then by its
+//   floating-point distance to the boundary, and as covered or not. The reported error is the
+//   binomial standard error sqrt(phi (1 - phi) / n) of n independent points, an upper bound for
+//   the stratified estimate's (measured: a few times smaller).
+// - Contacts: two disks are in contact when the gap |c1 - c2| - r1 - r2 <= contact_gap (overlaps
+//   count too). Default contact_gap: max(1e-9 rmax, 2^-42 (largest |coordinate| + 5 rmax)), 16
+//   times frontpack's automatic clearance (FillOptions::clearance), so that frontpack's tangent
+//   disks count as touching at any scale and offset. Coordination number: disk-disk contacts
+//   per disk, 2 * contacts / disks. A disk touches the wall when its distance to the boundary
+//   minus its radius is <= contact_gap; each distinct touching point counts one wall contact.
+// - Rattler: a disk with fewer than 3 contacts, counting disk-disk and wall contacts (in 2D a
+//   disk needs 3 to be held in place); one pass, not iterated.
+// - Interior disks: disks lying wholly in the interior (distance of the centre to the boundary
+//   >= band_width + r); their mean coordination is free of the boundary's missing neighbours.
+// - Sizes: the achieved radii against the requested distribution, by number and by area (each
+//   disk weighted by r^2); Kolmogorov-Smirnov distances sup |F_achieved - F_requested|; a table
+//   per class for discrete and grading-curve requests; a log-spaced histogram.
+//
+// Cost: linear in the disks and the samples (uniform grids); about 0.3 s per million samples.
+#pragma once
+
+#include <cstddef>
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "frontpack/domain.hpp"
+#include "frontpack/geometry.hpp"
+#include "frontpack/sizes.hpp"
+
+namespace frontpack {
+
+struct StatsOptions {
+  /// The requested radius distribution, for the size comparison (none: achieved sizes only).
+  std::optional<Radii> requested;
+  /// Contact tolerance on the gap between two disks (or a disk and the boundary); 0: automatic
+  /// (see the header comment).
+  double contact_gap = 0;
+  /// Width of the boundary band; 0: 2 * the largest radius.
+  double band_width = 0;
+  /// About this many sample points for the interior and band fractions (0: no sampling).
+  std::size_t samples = 1'000'000;
+  /// Bins of the size histogram (log-spaced in radius).
+  std::size_t histogram_bins = 20;
+};
+
+/// One class of the per-class table: radii in (previous row's radius, radius]. Fractions in
+/// the class, and cumulative ("passing": radius <= this row's radius), by number and by area.
+struct SizeClassRow {
+  double radius = 0;
+  double requested_number = 0;
+  double requested_area = 0;
+  double achieved_number = 0;
+  double achieved_area = 0;
+  double requested_number_passing = 0;
+  double requested_area_passing = 0;
+  double achieved_number_passing = 0;
+  double achieved_area_passing = 0;
+};
+
+/// A histogram bin [lo, hi) (the last one closed): the disks in it and their share of the number
+/// and of the area, achieved and (when a request is given) requested.
+struct HistogramBin {
+  double lo = 0;
+  double hi = 0;
+  std::size_t count = 0;
+  double achieved_number = 0;
+  double achieved_area = 0;
+  double requested_number = 0;
+  double requested_area = 0;
+};
+
+struct SizeStats {
+  std::size_t count = 0;
+  double rmin = 0;
+  double rmax = 0;
+  double mean = 0;           ///< mean radius (by number)
+  double sd = 0;             ///< standard deviation of the radius (by number)
+  double median_number = 0;  ///< radius with half of the disks at or below it
+  double median_area = 0;    ///< radius with half of the disk area at or below it
+  bool compared = false;     ///< a requested distribution was given
+  std::string requested;     ///< its description (RadiusDistribution::describe())
+  double ks_number = 0;      ///< sup over r of |achieved - requested| cumulative fraction by number
+  double ks_area = 0;        ///< the same by area
+  double ks_number_at = 0;   ///< a radius where the sup is reached
+  double ks_area_at = 0;
+  std::vector<SizeClassRow> classes;  ///< discrete and grading-curve requests only
+  std::vector<HistogramBin> histogram;
+};
+
+struct PackingStats {
+  std::size_t disks = 0;
+  double domain_area = 0;  ///< Domain::area()
+  double disk_area = 0;    ///< sum of pi r^2
+  double packing_fraction = 0;
+  double void_ratio = 0;  ///< (1 - phi) / phi (infinity for no disks)
+
+  double band_width = 0;         ///< the width used
+  double interior_fraction = 0;  ///< sampled; 0 if the interior got no sample
+  double band_fraction = 0;      ///< sampled; 0 if the band got no sample
+  double interior_error = 0;     ///< binomial standard error (an upper bound, see above)
+  double band_error = 0;
+  double interior_area = 0;  ///< sampled estimate of the interior's area
+  double band_area = 0;
+  std::size_t interior_samples = 0;
+  std::size_t band_samples = 0;
+
+  double contact_gap = 0;                           ///< the tolerance used
+  std::size_t contacts = 0;                         ///< disk-disk pairs in contact
+  std::size_t overlaps = 0;                         ///< pairs whose gap is below -contact_gap
+  double max_overlap = 0;                           ///< largest -gap among them (0 if none)
+  std::size_t wall_contacts = 0;                    ///< disk-boundary contacts
+  double mean_coordination = 0;                     ///< 2 contacts / disks
+  std::vector<std::size_t> coordination_histogram;  ///< [k]: disks with k disk-disk contacts
+  std::size_t rattlers = 0;                         ///< disks with < 3 contacts (walls included)
+  double mean_coordination_without_rattlers = 0;    ///< disk-disk contacts of non-rattlers, per non-rattler
+  std::size_t interior_disks = 0;                   ///< disks wholly in the interior
+  double interior_coordination = 0;                 ///< their mean number of disk-disk contacts
+
+  SizeStats sizes;
+};
+
+/// Measures a packing. Disks must have finite centres and finite radii > 0 (else
+/// std::invalid_argument naming the disk). Deterministic: the same input gives the same output.
+[[nodiscard]] PackingStats measure(const Domain& domain, std::span<const Disk> disks, const StatsOptions& options = {});
+
+/// Size statistics of radii alone, against an optional request (nullptr: none).
+[[nodiscard]] SizeStats measure_sizes(std::span<const double> radii, const RadiusDistribution* requested,
+                                      std::size_t histogram_bins = 20);
+
+}  // namespace frontpack
