@@ -13,8 +13,10 @@
 //   deterministic pseudo-random position in it: stratified sampling, no aliasing with lattice
 //   packings), each classified exactly as inside the domain (Domain::locate), then by its
 //   floating-point distance to the boundary, and as covered or not. The reported error is the
-//   binomial standard error sqrt(phi (1 - phi) / n) of n independent points, an upper bound for
-//   the stratified estimate's (measured: a few times smaller).
+//   binomial standard error sqrt(phi (1 - phi) / n) of n independent points; stratified sampling
+//   never has a larger variance. Measured on the hexagonal lattice (exact 0.906900): errors of
+//   1.6e-4, 4.5e-4 and 1.4e-4 at 0.25, 1 and 4 million samples (reported 5.9e-4, 3.0e-4,
+//   1.5e-4): disks a few sample spacings across leave most cells cut by a disk's edge.
 // - Contacts: two disks are in contact when the gap |c1 - c2| - r1 - r2 <= contact_gap (overlaps
 //   count too). Default contact_gap: max(1e-9 rmax, 2^-42 (largest |coordinate| + 5 rmax)), 16
 //   times frontpack's automatic clearance (FillOptions::clearance), so that frontpack's tangent
@@ -29,7 +31,8 @@
 //   disk weighted by r^2); Kolmogorov-Smirnov distances sup |F_achieved - F_requested|; a table
 //   per class for discrete and grading-curve requests; a log-spaced histogram.
 //
-// Cost: linear in the disks and the samples (uniform grids); about 0.3 s per million samples.
+// Cost: linear in the disks and the samples (uniform grids): about 0.5 s per million samples plus
+// 0.1 s per 50,000 disks (one core of an AMD EPYC).
 #pragma once
 
 #include <cstddef>
