@@ -31,3 +31,12 @@ frontpack_tool_test(fill_bad_method 5 "--method diagonal: expected closed or ope
 frontpack_tool_test(fill_bad_format 5 "unknown format '.xyz'" fill ${S}/l_shape.wkt -o out.xyz)
 frontpack_tool_test(fill_unwritable 2 "cannot write '/nonexistent/dir/p.csv.tmp'" fill ${S}/l_shape.wkt -o /nonexistent/dir/p.csv)
 frontpack_tool_test(fill_too_many 5 "would generate about [0-9]+ disks, more than max_disks" fill ${S}/unit_square.wkt --radius constant:1e-5)
+
+# The tool's CSV read back by the library's strict reader (frontpack::read_disks) and certified
+# again: the file holds the certificate and as many disks as the tool reported.
+set(roundtrip_csv ${CMAKE_CURRENT_BINARY_DIR}/l_roundtrip.csv)
+set(roundtrip_args fill ${S}/l_shape.wkt --radius uniform:0.02,0.08 --seed 3 -o ${roundtrip_csv})
+add_test(NAME tool.fill_csv_reads_back
+  COMMAND ${CMAKE_COMMAND} -DTOOL=$<TARGET_FILE:frontpack_tool> -DREADER=$<TARGET_FILE:frontpack_read_disks>
+          -DSHAPE=${S}/l_shape.wkt -DOUTPUT=${roundtrip_csv} "-DARGS=${roundtrip_args}"
+          -P ${CMAKE_CURRENT_SOURCE_DIR}/readers/tool_roundtrip.cmake)

@@ -7,6 +7,10 @@
 add_executable(frontpack_write_formats ${CMAKE_CURRENT_LIST_DIR}/write_formats.cpp)
 target_link_libraries(frontpack_write_formats PRIVATE frontpack::frontpack)
 frontpack_target_settings(frontpack_write_formats)
+# Reads a disk file strictly and certifies it (tool_tests.cmake: the tool's CSV reads back).
+add_executable(frontpack_read_disks ${CMAKE_CURRENT_LIST_DIR}/read_disks.cpp)
+target_link_libraries(frontpack_read_disks PRIVATE frontpack::frontpack)
+frontpack_target_settings(frontpack_read_disks)
 
 # Debian's Python modules (vtk from python3-vtk9) are installed for Debian's interpreter, which
 # may not be the first python3 on PATH (pyenv, a virtual environment).

@@ -1,0 +1,20 @@
+# Runs the tool (TOOL with ARGS, a ;-list, writing OUTPUT), then READER (frontpack_read_disks) on
+# OUTPUT against SHAPE: the file must parse strictly, hold as many disks as the tool reported,
+# and pass the exact certifier.
+file(REMOVE ${OUTPUT})
+execute_process(COMMAND ${TOOL} ${ARGS} RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(NOT code EQUAL 0)
+  message(FATAL_ERROR "tool exit code ${code}:\n${out}${err}")
+endif()
+if(NOT "${out}${err}" MATCHES "disks: +([0-9]+)")
+  message(FATAL_ERROR "tool did not report its disk count:\n${out}${err}")
+endif()
+set(reported ${CMAKE_MATCH_1})
+execute_process(COMMAND ${READER} ${OUTPUT} ${SHAPE} RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(NOT code EQUAL 0)
+  message(FATAL_ERROR "reading ${OUTPUT} back failed:\n${out}${err}")
+endif()
+if(NOT out MATCHES "^${reported} disks read, certified")
+  message(FATAL_ERROR "the tool reported ${reported} disks; the file holds: ${out}")
+endif()
+message(STATUS "ok: ${out}")
