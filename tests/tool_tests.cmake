@@ -29,7 +29,7 @@ frontpack_tool_test(fill_bad_radius_syntax 5 "expected uniform:RMIN,RMAX or cons
 frontpack_tool_test(fill_nan_radius 5 "must be a finite number > 0" fill ${S}/l_shape.wkt --radius constant:nan)
 frontpack_tool_test(fill_bad_method 5 "--method diagonal: expected closed or open" fill ${S}/l_shape.wkt --method diagonal)
 frontpack_tool_test(fill_bad_format 5 "unknown format '.xyz'" fill ${S}/l_shape.wkt -o out.xyz)
-frontpack_tool_test(fill_unwritable 2 "cannot write '/nonexistent/dir/p.csv.tmp'" fill ${S}/l_shape.wkt -o /nonexistent/dir/p.csv)
+frontpack_tool_test(fill_unwritable 2 "cannot write '/nonexistent/dir/p.csv': No such file or directory" fill ${S}/l_shape.wkt -o /nonexistent/dir/p.csv)
 frontpack_tool_test(fill_too_many 5 "would generate about [0-9]+ disks, more than max_disks" fill ${S}/unit_square.wkt --radius constant:1e-5)
 
 # The tool's CSV read back by the library's strict reader (frontpack::read_disks) and certified
@@ -40,3 +40,107 @@ add_test(NAME tool.fill_csv_reads_back
   COMMAND ${CMAKE_COMMAND} -DTOOL=$<TARGET_FILE:frontpack_tool> -DREADER=$<TARGET_FILE:frontpack_read_disks>
           -DSHAPE=${S}/l_shape.wkt -DOUTPUT=${roundtrip_csv} "-DARGS=${roundtrip_args}"
           -P ${CMAKE_CURRENT_SOURCE_DIR}/readers/tool_roundtrip.cmake)
+
+# Tests with checks on the files a run writes (see run_tool.cmake): each writes into its own
+# directory under tool_out/, which must be free of temporary files afterwards.
+#   frontpack_tool_check(NAME EXIT REGEX [SILENT] [FILES f...] [NO_FILES f...] [PNG f w h]
+#                        [JSON f key=regex...] ARGS arg...)
+function(frontpack_tool_check name expected_exit regex)
+  cmake_parse_arguments(T "SILENT" "" "FILES;NO_FILES;PNG;JSON;ARGS" ${ARGN})
+  add_test(NAME tool.${name}
+    COMMAND ${CMAKE_COMMAND} -DTOOL=$<TARGET_FILE:frontpack_tool> -DEXPECTED_EXIT=${expected_exit}
+            "-DREGEX=${regex}" "-DARGS=${T_ARGS}" -DOUT_DIR=${TOOL_OUT}/${name} "-DFILES=${T_FILES}"
+            "-DNO_FILES=${T_NO_FILES}" "-DPNG=${T_PNG}" "-DJSON=${T_JSON}" -DSILENT=${T_SILENT}
+            -P ${CMAKE_CURRENT_SOURCE_DIR}/run_tool.cmake)
+endfunction()
+
+set(TD ${CMAKE_CURRENT_SOURCE_DIR}/data/tool)
+set(TOOL_OUT ${CMAKE_CURRENT_BINARY_DIR}/tool_out)
+set(SQ ${S}/unit_square.wkt)
+
+# fill: every format, the JSON summary, --quiet.
+set(O ${TOOL_OUT}/fill_all_formats)
+frontpack_tool_check(fill_all_formats 0
+  "fraction: +0\\.[0-9]+ overall, 0\\.[0-9]+ interior.*radii: +min .*wrote: .*p\\.data \\(lammps\\).*p\\.png \\(png\\)"
+  FILES ${O}/p.csv ${O}/p.txt ${O}/p.data ${O}/p.vtp ${O}/p.svg ${O}/p.pdf ${O}/p.png ${O}/s.json
+  PNG ${O}/p.png 401 209
+  JSON ${O}/s.json "command=^fill$" "method=^closed$" "seed=^7$" "disks=^[1-9][0-9]+$"
+       "packing_fraction=^0\\.[6-9]" "interior_fraction=^0\\.[6-9]" "radius/min=^0\\.0" "radius/mean=^0\\.0"
+       "certificate/certified=^ON$" "certificate/dropped=^0$" "certificate/exact=^ON$" "domain/holes=^7$"
+       "seconds/total=^[0-9]" "outputs/6/format=^png$"
+  ARGS fill ${S}/plate_with_holes.wkt --radius uniform:0.01,0.04 --seed 7 --width 401 -o ${O}/p.csv -o ${O}/p.txt
+       -o ${O}/p.data -o ${O}/p.vtp -o ${O}/p.svg -o ${O}/p.pdf -o ${O}/p.png --json ${O}/s.json)
+set(O ${TOOL_OUT}/fill_quiet)
+frontpack_tool_check(fill_quiet 0 "" SILENT FILES ${O}/q.csv ${O}/q.json
+  ARGS fill ${S}/l_shape.wkt --radius uniform:0.02,0.08 --quiet -o ${O}/q.csv --json ${O}/q.json)
+set(O ${TOOL_OUT}/fill_format_option)
+frontpack_tool_check(fill_format_option 0 "wrote: .*out\\.dat \\(yade\\)" FILES ${O}/out.dat
+  ARGS fill ${S}/l_shape.wkt --radius uniform:0.02,0.08 --format yade -o ${O}/out.dat)
+frontpack_tool_check(fill_unknown_format_option 5 "--format bogus: unknown format; expected csv, yade, lammps, vtp, png, svg or pdf"
+  NO_FILES ${TOOL_OUT}/fill_unknown_format_option/p.csv
+  ARGS fill ${S}/l_shape.wkt --format bogus -o ${TOOL_OUT}/fill_unknown_format_option/p.csv)
+frontpack_tool_check(fill_no_extension 5 "no file extension to tell the format by"
+  ARGS fill ${S}/l_shape.wkt -o ${TOOL_OUT}/fill_no_extension/packing)
+# A bad second output fails before anything is written: no partial set of outputs either.
+frontpack_tool_check(fill_unwritable_second 2 "cannot write '/nonexistent/dir/p\\.csv'"
+  NO_FILES ${TOOL_OUT}/fill_unwritable_second/first.csv
+  ARGS fill ${S}/l_shape.wkt -o ${TOOL_OUT}/fill_unwritable_second/first.csv -o /nonexistent/dir/p.csv)
+frontpack_tool_check(fill_zero_radius 5 "radius 'constant:0': .*must be a finite number > 0"
+  NO_FILES ${TOOL_OUT}/fill_zero_radius/p.csv ARGS fill ${S}/l_shape.wkt --radius constant:0 -o ${TOOL_OUT}/fill_zero_radius/p.csv)
+frontpack_tool_check(fill_negative_radius 5 "radius 'uniform:-0.1,0.1'" ARGS fill ${S}/l_shape.wkt --radius uniform:-0.1,0.1)
+frontpack_tool_check(fill_nan_uniform 5 "radius 'uniform:nan,0.1'" ARGS fill ${S}/l_shape.wkt --radius uniform:nan,0.1)
+frontpack_tool_check(fill_missing_domain 2 "cannot open '/nonexistent/domain.wkt'"
+  NO_FILES ${TOOL_OUT}/fill_missing_domain/p.csv ARGS fill /nonexistent/domain.wkt -o ${TOOL_OUT}/fill_missing_domain/p.csv)
+frontpack_tool_check(fill_invalid_domain 4 "invalid domain: polygon 0, outer ring: edge 0 .* cross"
+  NO_FILES ${TOOL_OUT}/fill_invalid_domain/p.csv
+  ARGS fill --wkt "POLYGON((0 0,1 1,1 0,0 1,0 0))" -o ${TOOL_OUT}/fill_invalid_domain/p.csv)
+frontpack_tool_check(fill_missing_domain_argument 1 "DOMAIN or --wkt" ARGS fill --radius constant:0.1)
+frontpack_tool_check(fill_unknown_option 1 "--colour" ARGS fill ${SQ} --colour red)
+frontpack_tool_check(fill_help 0 "Example:.*frontpack fill shapes/plate_with_holes.wkt.*--json summary.json" ARGS fill --help)
+frontpack_tool_check(help_exit_codes 0 "6 packing not certified.*7 malformed disk file.*130 interrupted" ARGS --help)
+
+# check: exact certification of hand-made files.
+frontpack_tool_check(check_good 0 "disks: +5 .*outside: +0 disks.*overlaps: +0 pairs.*result: +certified"
+  ARGS check ${SQ} ${TD}/good.csv)
+frontpack_tool_check(check_good_yade 0 "disks: +3 .*result: +certified" ARGS check ${SQ} ${TD}/good.txt)
+frontpack_tool_check(check_one_overlap 6
+  "overlaps: +1 pair of overlapping disks\\; worst: disks 2 and 5 overlap by about 0\\.0625 .*NOT certified.*1 overlapping pair, 0 disks outside"
+  ARGS check ${SQ} ${TD}/one_overlap.csv)
+frontpack_tool_check(check_one_overlap_all 6 "overlap 2 5 .*result: +NOT certified" ARGS check --all ${SQ} ${TD}/one_overlap.csv)
+frontpack_tool_check(check_outside 6
+  "outside: +2 disks not entirely inside the domain\\; worst: disk 6 \\(centre \\(0\\.5, 0\\.9375\\), radius 0\\.125\\) reaches about 0\\.0625 out"
+  ARGS check ${SQ} ${TD}/outside.csv)
+set(O ${TOOL_OUT}/check_json)
+frontpack_tool_check(check_json 6 "NOT certified" FILES ${O}/c.json
+  JSON ${O}/c.json "certified=^OFF$" "overlapping_pairs=^1$" "deepest_overlap/disks/0=^2$" "deepest_overlap/disks/1=^5$"
+       "deepest_overlap/depth=^0\\.0625$"
+  ARGS check ${SQ} ${TD}/one_overlap.csv --json ${O}/c.json)
+frontpack_tool_check(check_quiet 6 "^frontpack: .*one_overlap\\.csv is not certified" ARGS check -q ${SQ} ${TD}/one_overlap.csv)
+frontpack_tool_check(check_malformed_line 7 "malformed_line\\.csv:4: expected 3 comma-separated numbers, got '0\\.75,0\\.75'"
+  ARGS check ${SQ} ${TD}/malformed_line.csv)
+frontpack_tool_check(check_missing_disk_file 2 "cannot open '/nonexistent/disks\\.csv'" ARGS check ${SQ} /nonexistent/disks.csv)
+frontpack_tool_check(check_missing_argument 1 "DISKS is required" ARGS check ${SQ})
+frontpack_tool_check(check_help 0 "Example:.*frontpack check shapes/l_shape.wkt packing.csv" ARGS check --help)
+
+# render: PNG of the right size, SVG, PDF.
+set(O ${TOOL_OUT}/render_png)
+frontpack_tool_check(render_png 0 "wrote: .*u\\.png \\(png, 300 x 300, 5 disks\\)" PNG ${O}/u.png 300 300
+  ARGS render ${SQ} ${TD}/good.csv -o ${O}/u.png --width 300)
+set(O ${TOOL_OUT}/render_svg_pdf)
+frontpack_tool_check(render_svg_pdf 0 "u\\.svg \\(svg.*u\\.pdf \\(pdf" FILES ${O}/u.svg ${O}/u.pdf
+  ARGS render ${SQ} ${TD}/good.csv -o ${O}/u.svg -o ${O}/u.pdf)
+frontpack_tool_check(render_unknown_format 5 "unknown picture format '\\.gif'"
+  NO_FILES ${TOOL_OUT}/render_unknown_format/u.gif ARGS render ${SQ} ${TD}/good.csv -o ${TOOL_OUT}/render_unknown_format/u.gif)
+frontpack_tool_check(render_bad_width 5 "--width 3: expected 16 to 16384 pixels"
+  NO_FILES ${TOOL_OUT}/render_bad_width/u.png ARGS render ${SQ} ${TD}/good.csv --width 3 -o ${TOOL_OUT}/render_bad_width/u.png)
+frontpack_tool_check(render_malformed 7 "malformed_line\\.csv:4:"
+  NO_FILES ${TOOL_OUT}/render_malformed/u.png ARGS render ${SQ} ${TD}/malformed_line.csv -o ${TOOL_OUT}/render_malformed/u.png)
+frontpack_tool_check(render_unwritable 2 "cannot write '/nonexistent/dir/u\\.png'" ARGS render ${SQ} ${TD}/good.csv -o /nonexistent/dir/u.png)
+frontpack_tool_check(render_help 0 "Example:.*frontpack render shapes/plate_with_holes.wkt packing.csv -o packing.png" ARGS render --help)
+
+# stats: the statistics module on a hand-made file.
+set(O ${TOOL_OUT}/stats_json)
+frontpack_tool_check(stats_json 0 "disks: +5 .*fraction: +0\\.2454 overall.*requested: +constant" FILES ${O}/s.json
+  JSON ${O}/s.json "command=^stats$" "disks=^5$" "radius/max=^0\\.125$" "packing_fraction=^0\\.245"
+  ARGS stats ${SQ} ${TD}/good.csv --radius constant:0.125 --json ${O}/s.json)
+frontpack_tool_check(stats_malformed 7 "malformed_line\\.csv:4:" ARGS stats ${SQ} ${TD}/malformed_line.csv)
