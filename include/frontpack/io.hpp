@@ -54,7 +54,10 @@ struct SvgStyle {
 
 /// Options of write_lammps.
 struct LammpsOptions {
-  double density = 1.0;        ///< per-atom density column (LAMMPS: mass = density * (4/3) pi r^3); finite, > 0
+  /// Per-atom density column; finite, > 0. LAMMPS (29 Sep 2021, Debian bookworm) sets
+  /// mass = density * (4/3) pi r^3 even with `dimension 2`; for a mass per area, set the masses
+  /// after read_data (or use `set ... density/disc` where your LAMMPS has it).
+  double density = 1.0;
   std::int64_t atom_type = 1;  ///< type of every atom, >= 1; the header declares this many atom types
 };
 
