@@ -214,7 +214,12 @@ extern "C" void on_sigint(int /*signal*/) {
 // writing keeps its default effect, which cannot leave a partial output file either).
 class InterruptScope {
  public:
-  InterruptScope() { previous_ = std::signal(SIGINT, on_sigint); }
+  InterruptScope() {
+    previous_ = std::signal(SIGINT, on_sigint);
+    if (previous_ == SIG_IGN) {
+      std::signal(SIGINT, SIG_IGN);  // started with Ctrl-C ignored (nohup, a background job): keep it so
+    }
+  }
   ~InterruptScope() { std::signal(SIGINT, previous_ == SIG_ERR ? SIG_DFL : previous_); }
   InterruptScope(const InterruptScope&) = delete;
   InterruptScope& operator=(const InterruptScope&) = delete;
