@@ -144,3 +144,19 @@ frontpack_tool_check(stats_json 0 "disks: +5 .*fraction: +0\\.2454 overall.*requ
   JSON ${O}/s.json "command=^stats$" "disks=^5$" "radius/max=^0\\.125$" "packing_fraction=^0\\.245"
   ARGS stats ${SQ} ${TD}/good.csv --radius constant:0.125 --json ${O}/s.json)
 frontpack_tool_check(stats_malformed 7 "malformed_line\\.csv:4:" ARGS stats ${SQ} ${TD}/malformed_line.csv)
+frontpack_tool_check(fill_json_unwritable 2 "cannot write '/nonexistent/dir/s\\.json'"
+  NO_FILES ${TOOL_OUT}/fill_json_unwritable/p.csv
+  ARGS fill ${S}/l_shape.wkt -o ${TOOL_OUT}/fill_json_unwritable/p.csv --json /nonexistent/dir/s.json)
+
+# Ctrl-C: SIGINT one second into a run of about ten million disks cancels it through the progress
+# callback: exit 130 and nothing written.
+find_program(TIMEOUT_PROGRAM timeout)
+if(TIMEOUT_PROGRAM)
+  set(O ${TOOL_OUT}/fill_interrupted)
+  set(interrupt_args --preserve-status -s INT 1 $<TARGET_FILE:frontpack_tool> fill ${SQ} --radius uniform:0.0001,0.0002
+      -o ${O}/p.csv --json ${O}/s.json)
+  add_test(NAME tool.fill_interrupted
+    COMMAND ${CMAKE_COMMAND} -DTOOL=${TIMEOUT_PROGRAM} -DEXPECTED_EXIT=130 "-DREGEX=^frontpack: interrupted\\; nothing written"
+            "-DARGS=${interrupt_args}" -DOUT_DIR=${O} "-DNO_FILES=${O}/p.csv;${O}/s.json"
+            -P ${CMAKE_CURRENT_SOURCE_DIR}/run_tool.cmake)
+endif()
