@@ -1,0 +1,68 @@
+// certify()'s report on hand-made disk sets: the exact decisions (which disks are outside, which
+// pairs overlap) and the floating-point "how bad" figures frontpack check prints.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <vector>
+
+#include "frontpack/frontpack.hpp"
+
+namespace fp = frontpack;
+
+namespace {
+
+// The unit square with a square hole [0.4, 0.6]^2. Every number below is a short binary
+// fraction or chosen so that the expected figures are exact in double.
+fp::Domain square_with_hole() {
+  return fp::Domain::from_wkt(
+      "POLYGON((0 0,1 0,1 1,0 1,0 0),(0.375 0.375,0.375 0.625,0.625 0.625,0.625 0.375,0.375 0.375))");
+}
+
+TEST(CertifyReport, CertifiedSetHasNoWorst) {
+  const std::vector<fp::Disk> disks = {{{0.125, 0.125}, 0.125}, {{0.375, 0.125}, 0.125}};  // touching, and the walls
+  const fp::CertifyReport r = fp::certify(square_with_hole(), disks);
+  EXPECT_TRUE(r.outside.empty());
+  EXPECT_TRUE(r.overlapping.empty());
+  EXPECT_FALSE(r.deepest_overlap.has_value());
+  EXPECT_FALSE(r.farthest_outside.has_value());
+}
+
+TEST(CertifyReport, DeepestOverlapIsTheDeepestPair) {
+  const std::vector<fp::Disk> disks = {
+      {{0.125, 0.125}, 0.0625}, {{0.25, 0.125}, 0.0625},     // overlap by 0 (touch): not a pair
+      {{0.125, 0.875}, 0.0625}, {{0.1875, 0.875}, 0.0625},   // overlap by 0.0625
+      {{0.875, 0.875}, 0.0625}, {{0.875, 0.78125}, 0.0625},  // overlap by 0.03125
+  };
+  const fp::CertifyReport r = fp::certify(square_with_hole(), disks);
+  ASSERT_EQ(r.overlapping.size(), 2u);
+  ASSERT_TRUE(r.deepest_overlap.has_value());
+  EXPECT_EQ(r.deepest_overlap->first, 2u);
+  EXPECT_EQ(r.deepest_overlap->second, 3u);
+  EXPECT_EQ(r.deepest_overlap_depth, 0.0625);
+}
+
+TEST(CertifyReport, FarthestOutsideMeasuresFromTheBoundary) {
+  const std::vector<fp::Disk> disks = {
+      {{0.0625, 0.25}, 0.125},  // centre inside, 0.0625 through the left wall
+      {{1.125, 0.25}, 0.0625},  // centre outside, 0.125 beyond the right wall: reaches 0.1875 out
+      {{0.5, 0.5}, 0.0625},     // centre in the hole, 0.125 from its edges: 0.1875 into the hole
+      {{0.25, 0.75}, 0.125},    // inside
+      {{0.75, 0.0}, 0.03125},   // centre on the boundary: 0.03125 out
+  };
+  const fp::CertifyReport r = fp::certify(square_with_hole(), disks);
+  EXPECT_EQ(r.outside, (std::vector<std::size_t>{0, 1, 2, 4}));
+  ASSERT_TRUE(r.farthest_outside.has_value());
+  EXPECT_EQ(*r.farthest_outside, 1u);  // the first of the two at 0.1875
+  EXPECT_DOUBLE_EQ(r.farthest_outside_by, 0.1875);
+}
+
+TEST(CertifyReport, NonFiniteDiskIsInfinitelyFarOut) {
+  const std::vector<fp::Disk> disks = {{{2.0, 2.0}, 0.125}, {{std::numeric_limits<double>::quiet_NaN(), 0.5}, 0.125}};
+  const fp::CertifyReport r = fp::certify(square_with_hole(), disks);
+  ASSERT_TRUE(r.farthest_outside.has_value());
+  EXPECT_EQ(*r.farthest_outside, 1u);
+  EXPECT_TRUE(std::isinf(r.farthest_outside_by));
+}
+
+}  // namespace
