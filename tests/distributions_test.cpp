@@ -190,7 +190,8 @@ TEST(Distributions, LognormalMatchesItsCdf) {
   const auto wrong = fp::sample_radii(fp::Radii::lognormal(1.0, 1.55, 0.3, 4.0), kSamples, kSeed);
   EXPECT_GT(ks_number(wrong, ref), ks_threshold(kSamples));
   // Area cdf: against the samples weighted by r^2.
-  const fp::RadiusDistribution& d = fp::Radii::lognormal(1.0, 1.5, 0.3, 4.0).distribution();
+  const fp::Radii radii = fp::Radii::lognormal(1.0, 1.5, 0.3, 4.0);
+  const fp::RadiusDistribution& d = radii.distribution();
   double n_eff = 0;
   EXPECT_LT(ks_area(
                 x, [&d](double r) { return d.area_cdf(r); }, n_eff),
