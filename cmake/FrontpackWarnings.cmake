@@ -15,4 +15,8 @@ function(frontpack_target_settings target)
                                              -fno-omit-frame-pointer)
     target_link_options(${target} PUBLIC -fsanitize=address,undefined)
   endif()
+  if(FRONTPACK_BUILD_FUZZERS)
+    # Coverage feedback for libFuzzer in every target of ours; the fuzz programs add the driver.
+    target_compile_options(${target} PRIVATE -fsanitize=fuzzer-no-link)
+  endif()
 endfunction()

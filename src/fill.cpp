@@ -75,6 +75,7 @@ Packing run_fill(const Domain& domain, const FillOptions& options,
   std::vector<Disk> raw;
   raw.reserve(static_cast<std::size_t>(estimate * 1.2) + 64);
   detail::Rng rng(options.seed);
+  std::vector<std::size_t> part_end;  // raw[part_end[p - 1] .. part_end[p]) came from polygon p
   for (std::size_t p = 0; p < domain.num_polygons() && !packing.truncated && !packing.cancelled; ++p) {
     detail::FrontRequest req;
     req.box = domain.bbox(p);
@@ -94,6 +95,7 @@ Packing run_fill(const Domain& domain, const FillOptions& options,
     const detail::FrontResult result = detail::advance_front(req, rng, raw, packing.stats);
     packing.truncated = packing.truncated || result.truncated;
     packing.cancelled = packing.cancelled || result.cancelled;
+    part_end.push_back(raw.size());
   }
 
   packing.stats.seconds_front = seconds_since(t0);
@@ -101,9 +103,26 @@ Packing run_fill(const Domain& domain, const FillOptions& options,
 
   // Certification. Sec. 2.4.5: disks not entirely inside the domain are culled (exactly).
   packing.certificate.generated = raw.size();
+  // Each polygon's disks must lie in that polygon, not merely in the domain: the boxes of two
+  // polygons can overlap, and a disk of one polygon's fill inside the other would overlap that
+  // polygon's own disks. (A disk inside the domain lies in exactly one polygon: polygons meet at
+  // most at points, and a disk minus a point is connected.)
   {
     std::vector<std::uint8_t> inside(raw.size());
-    domain.contains(raw, inside);
+    if (domain.num_polygons() == 1) {
+      domain.contains(raw, inside);
+    } else {
+      std::size_t begin = 0;
+      for (std::size_t p = 0; p < part_end.size(); ++p) {
+        const std::size_t n = part_end[p] - begin;
+        if (n > 0) {
+          const Domain part = Domain::from_polygons({domain.polygons()[p]});
+          part.contains(std::span<const Disk>(raw).subspan(begin, n),
+                        std::span<std::uint8_t>(inside).subspan(begin, n));
+        }
+        begin = part_end[p];
+      }
+    }
     keep_where(raw, inside, 1);
   }
   packing.certificate.culled = packing.certificate.generated - raw.size();

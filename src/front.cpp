@@ -61,6 +61,7 @@ class Front {
     box_ = Box{0, 0, req.box.xmax - origin_.x, req.box.ymax - origin_.y};
     rmax_ = req.radii->max();
     clearance_ = req.clearance;
+    margin_ = clearance_ / 2;
     band_ = clearance_ / 4;
     window_ = req.window == 0 ? std::numeric_limits<std::size_t>::max() : req.window;
 
@@ -195,14 +196,19 @@ class Front {
   // A candidate disk with its band limits precomputed: the overlap test runs ~25 times per disk.
   struct Probe {
     double x, y, r;
-    double r_hi;  // r + band
-    double r_lo;  // r - band
+    double r_hi;  // r + margin + band
+    double r_lo;  // r + margin - band
   };
-  [[nodiscard]] Probe probe(double x, double y, double r) const noexcept { return {x, y, r, r + band_, r - band_}; }
+  [[nodiscard]] Probe probe(double x, double y, double r) const noexcept {
+    return {x, y, r, r + margin_ + band_, r + margin_ - band_};
+  }
 
-  // Whether the candidate overlaps disk o. Outside a narrow band around contact floating point
-  // decides; inside it, the exact predicate does, so that a disk is never accepted in overlap nor
-  // rejected for an overlap that is not there.
+  // Whether the candidate comes closer to disk o than r + o.r + margin: "overlaps" for the
+  // generator. The margin (half the clearance) keeps every accepted pair apart by more than the
+  // rounding of the output (box corner + local position) can take away, so that no pair overlaps
+  // in the coordinates written out; tangent placements, at the full clearance, always pass.
+  // Outside a narrow band around that distance floating point decides; inside it, the exact
+  // predicate does.
   bool overlaps(const Probe& p, const Node& o) {
     const double dx = p.x - o.x;
     const double dy = p.y - o.y;
@@ -216,7 +222,7 @@ class Front {
       return true;
     }
     ++stats_.exact_checks;
-    return disks_overlap_exact({p.x, p.y}, p.r, {o.x, o.y}, o.r);
+    return disks_closer_than_exact({p.x, p.y}, p.r, {o.x, o.y}, o.r, margin_);
   }
 
   // Whether a disk at (x, y, r) crosses wall w (open form). A disk within the band of a wall
@@ -560,6 +566,7 @@ class Front {
   Box box_;
   double rmax_ = 0;
   double clearance_ = 0;
+  double margin_ = 0;
   double band_ = 0;
   std::size_t window_ = 5;
   std::size_t budget_;

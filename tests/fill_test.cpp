@@ -276,6 +276,24 @@ TEST(Fill, TerminatesOnHostileRadii) {
   }
 }
 
+// A polygon's disks are culled against that polygon, not the whole domain: here the L's box
+// contains the square, and the L's fill covers it too (found by the fill fuzzer).
+TEST(Fill, PolygonsWhoseBoxesOverlapKeepTheirOwnDisks) {
+  const fp::Domain domain =
+      fp::Domain::from_wkt("MULTIPOLYGON(((0 0,2 0,2 1,1 1,1 2,0 2,0 0)),((1.1 1.1,2 1.1,2 2,1.1 2,1.1 1.1)))");
+  for (const fp::Method m : {fp::Method::closed, fp::Method::open}) {
+    for (const std::uint64_t seed : {1U, 2U, 3U}) {
+      SCOPED_TRACE(std::string(fp::to_string(m)) + " seed " + std::to_string(seed));
+      const fp::Packing p = fill(domain, m, fp::Radii::uniform(0.01, 0.05), seed);
+      EXPECT_EQ(p.certificate.dropped, 0U);
+      EXPECT_GT(p.disks.size(), 500U);
+      const fp::CertifyReport again = fp::certify(domain, p.disks);
+      EXPECT_TRUE(again.overlapping.empty());
+      EXPECT_TRUE(again.outside.empty());
+    }
+  }
+}
+
 TEST(Fill, OptionsAreChecked) {
   EXPECT_THROW((void)fp::Radii::uniform(0.2, 0.1), fp::OptionError);
   EXPECT_THROW((void)fp::Radii::uniform(0, 0.1), fp::OptionError);

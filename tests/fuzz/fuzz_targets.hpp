@@ -1,0 +1,23 @@
+// Fuzz targets (issue #7). Each function takes one input, must return normally for every input,
+// and aborts (through check()) when a guarantee is broken. They are linked both into the
+// libFuzzer programs (tests/fuzz/main.cpp, Clang builds) and into the unit tests, which replay
+// the committed seed corpora and every regression file on every build.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+
+namespace frontpack::fuzz {
+
+/// Domain::from_wkt on arbitrary text: it accepts or throws frontpack::Error (never anything
+/// else); an accepted domain is valid (positive finite area, finite box), survives a WKT round
+/// trip unchanged, and answers point queries.
+void wkt(const std::uint8_t* data, std::size_t size);
+
+/// fill() on a small domain and radius request decoded from the bytes (random rings and holes,
+/// scales from 1e-9 to 1e9, offsets up to 1e9, radius ratios up to 1000, both forms, any window):
+/// it returns or throws frontpack::Error; a returned packing certifies exactly (0 overlapping
+/// pairs, 0 disks outside, checked by an independent certify() call) and is reproducible.
+void fill(const std::uint8_t* data, std::size_t size);
+
+}  // namespace frontpack::fuzz
