@@ -1,8 +1,13 @@
 // fill(): the advancing front over each polygon's bounding box (Sec. 2.4.5), then certification:
 // exact culling against the domain and the global overlap pass.
+#include <unistd.h>
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <limits>
 #include <string>
 
 #include "certify.hpp"
@@ -50,6 +55,23 @@ void keep_where(std::vector<Disk>& disks, const std::vector<std::uint8_t>& flag,
   disks.resize(kept);
 }
 
+// Physical memory in bytes, or 0 if the system does not say.
+double physical_memory() {
+  const long pages = ::sysconf(_SC_PHYS_PAGES);
+  const long page = ::sysconf(_SC_PAGESIZE);
+  return pages > 0 && page > 0 ? static_cast<double>(pages) * static_cast<double>(page) : 0;
+}
+
+// A count for a message: an integer below 1e15, else in scientific notation.
+std::string format_count(double v) {
+  if (v < 1e15) {
+    return std::to_string(static_cast<std::uint64_t>(v));
+  }
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.3g", v);
+  return buf;
+}
+
 double seconds_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
@@ -63,11 +85,22 @@ Packing run_fill(const Domain& domain, const FillOptions& options,
   for (std::size_t p = 0; p < domain.num_polygons(); ++p) {
     estimate += detail::estimate_disks(domain.bbox(p), radii);
   }
+  // Saturated: an estimate can exceed every integer (1e600 disks for radii of 1e-300).
+  const std::size_t count =
+      estimate < 0x1p63 ? static_cast<std::size_t>(estimate) : std::numeric_limits<std::size_t>::max();
   if (estimate > static_cast<double>(options.max_disks)) {
-    throw LimitError("the request would generate about " + std::to_string(static_cast<std::size_t>(estimate)) +
-                         " disks, more than max_disks = " + std::to_string(options.max_disks) +
-                         "; use larger radii or raise max_disks",
-                     static_cast<std::size_t>(estimate));
+    throw LimitError("the request would generate about " + format_count(estimate) + " disks, more than max_disks = " +
+                         std::to_string(options.max_disks) + "; use larger radii or raise max_disks",
+                     count);
+  }
+  const double memory_limit =
+      options.memory_limit != 0 ? static_cast<double>(options.memory_limit) : 0.75 * physical_memory();
+  const double memory = estimate * static_cast<double>(peak_bytes_per_disk);
+  if (memory_limit > 0 && memory > memory_limit) {
+    throw LimitError("the request would generate about " + format_count(estimate) + " disks, needing about " +
+                         format_count(memory) + " bytes of memory, more than the limit of " +
+                         format_count(memory_limit) + " bytes; use larger radii or raise memory_limit",
+                     count);
   }
 
   Packing packing;

@@ -56,4 +56,8 @@ TEST(FuzzReplay, FillCorpusAndRegressions) {
   EXPECT_GE(replay("fill", frontpack::fuzz::fill), 20U) << "the committed fill corpus went missing";
 }
 
+TEST(FuzzReplay, DiskFileCorpusAndRegressions) {
+  EXPECT_GE(replay("disks", frontpack::fuzz::disks), 10U) << "the committed disk-file corpus went missing";
+}
+
 }  // namespace

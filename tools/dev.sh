@@ -3,8 +3,10 @@
 #
 #   tools/dev.sh demo   install packages, build (Release), fill a bundled shape (CSV + SVG in build/)
 #   tools/dev.sh test   install packages, build, run the whole test suite in Release and
-#                       under AddressSanitizer + UndefinedBehaviorSanitizer (what CI runs)
+#                       under AddressSanitizer + UndefinedBehaviorSanitizer, then run each
+#                       fuzz target for FRONTPACK_FUZZ_SECONDS (default 60) (what CI runs)
 #   tools/dev.sh build  install packages and build (Release) only
+#   tools/dev.sh fuzz [SECONDS]  build the libFuzzer programs (Clang) and run each target
 #
 # Works on a fresh Debian bookworm machine as root (or with sudo), and again incrementally.
 set -euo pipefail
@@ -18,6 +20,9 @@ packages=(
 )
 # The programs that read our files back in the real-reader tests (tests/readers/): `test` only.
 test_packages=(lammps python3 python3-vtk9 yade)
+# libFuzzer: Clang and its runtime (`fuzz`, and `test`, which fuzzes each target for a while).
+fuzz_packages=(clang libclang-rt-14-dev)
+fuzz_targets=(wkt fill disks)
 
 install_packages() {
   local missing=()
@@ -46,6 +51,22 @@ run_tests() {  # $1 = preset
   ctest --preset "$1"
 }
 
+# Runs every fuzz target for $1 seconds, from the committed seed corpus and regressions (read
+# only) plus a working corpus in build/fuzz/corpus. A crash, a sanitizer report, an input slower
+# than 30 s or above 4 GB stops the run with the input saved in build/fuzz/findings/<target>/:
+# commit it to tests/fuzz/regressions/<target>/ under a name that says what it found.
+run_fuzzers() {
+  build fuzz
+  for t in "${fuzz_targets[@]}"; do
+    mkdir -p "build/fuzz/corpus/$t" "build/fuzz/findings/$t"
+    echo "==> fuzzing $t for $1 s"
+    "build/fuzz/tests/fuzz/fuzz_$t" -max_total_time="$1" -timeout=30 -rss_limit_mb=4096 -print_final_stats=1 \
+      -artifact_prefix="build/fuzz/findings/$t/" "build/fuzz/corpus/$t" "tests/fuzz/corpus/$t" \
+      "tests/fuzz/regressions/$t" 2>&1 | grep -E '^(stat::|==|SUMMARY|frontpack fuzz|artifact)' || true
+    test "${PIPESTATUS[0]}" -eq 0 || { echo "error: fuzz_$t found a problem (see build/fuzz/findings/$t/)" >&2; exit 1; }
+  done
+}
+
 case "${1:-}" in
   demo)
     install_packages
@@ -60,16 +81,22 @@ case "${1:-}" in
     build release
     ;;
   test)
-    packages+=("${test_packages[@]}")
+    packages+=("${test_packages[@]}" "${fuzz_packages[@]}")
     install_packages
     export FRONTPACK_REQUIRE_READERS=1  # a reader test may not skip here
     build asan
     run_tests asan
     build release
     run_tests release
+    run_fuzzers "${FRONTPACK_FUZZ_SECONDS:-60}"
+    ;;
+  fuzz)
+    packages+=("${fuzz_packages[@]}")
+    install_packages
+    run_fuzzers "${2:-60}"
     ;;
   *)
-    sed -n '2,9p' "$0" | sed 's/^# \{0,1\}//'
+    sed -n '2,11p' "$0" | sed 's/^# \{0,1\}//'
     exit 1
     ;;
 esac

@@ -63,7 +63,15 @@ struct FillOptions {
   /// Refuse requests whose estimated disk count exceeds this (LimitError), and stop a run that
   /// reaches it (Packing::truncated).
   std::size_t max_disks = 50'000'000;
+  /// Refuse requests whose estimated peak memory (peak_bytes_per_disk per estimated disk)
+  /// exceeds this many bytes (LimitError), so that a run is never killed by the operating system
+  /// half-way. 0 (the default) means three quarters of the machine's physical memory.
+  std::size_t memory_limit = 0;
 };
+
+/// The documented bound on fill()'s peak memory per generated disk (measured 56-61 bytes on the
+/// 1M- and 10M-disk benchmarks; docs/performance.md).
+inline constexpr std::size_t peak_bytes_per_disk = 64;
 
 /// Progress of a run, reported through Generator::on_progress.
 struct Progress {

@@ -20,4 +20,8 @@ void wkt(const std::uint8_t* data, std::size_t size);
 /// pairs, 0 disks outside, checked by an independent certify() call) and is reproducible.
 void fill(const std::uint8_t* data, std::size_t size);
 
+/// read_csv and read_yade on arbitrary text: each accepts or throws frontpack::Error; accepted
+/// disks are finite with positive radii and survive write + read bit for bit.
+void disks(const std::uint8_t* data, std::size_t size);
+
 }  // namespace frontpack::fuzz
