@@ -187,6 +187,34 @@ bool EdgeGrid::odd_crossings(Point p, std::size_t i, std::size_t k, std::size_t 
   return odd;
 }
 
+bool EdgeGrid::odd_crossings_up(Point p, std::size_t i, std::size_t j, std::size_t m,
+                                std::vector<std::uint32_t>& scratch) const {
+  scratch.clear();
+  for (std::size_t r = j; r < m; ++r) {
+    const auto list = edges_of(cell(i, r));
+    scratch.insert(scratch.end(), list.begin(), list.end());
+  }
+  std::sort(scratch.begin(), scratch.end());
+  scratch.erase(std::unique(scratch.begin(), scratch.end()), scratch.end());
+  const Point t{p.x, ys_[std::min(m, ny_)]};
+  bool odd = false;
+  for (const std::uint32_t e : scratch) {
+    Point lo = v_[e];
+    Point hi = v_[next_[e]];
+    if ((lo.x > p.x) == (hi.x > p.x)) {
+      continue;  // half-open rule: exactly one endpoint strictly right of the line
+    }
+    if (lo.x > hi.x) {
+      std::swap(lo, hi);
+    }
+    // The crossing lies strictly between p and t: p below the rightward edge, t above it.
+    if (orientation(lo, hi, p) < 0 && orientation(lo, hi, t) > 0) {
+      odd = !odd;
+    }
+  }
+  return odd;
+}
+
 void EdgeGrid::classify_cells() {
   std::vector<std::uint32_t> scratch;
   for (std::size_t c = 0; c < nx_ * ny_; ++c) {
@@ -221,14 +249,27 @@ Location EdgeGrid::locate_in(Point p, std::size_t i, std::size_t j) const {
       return Location::boundary;
     }
   }
-  std::size_t k = i + 1;
-  while (k < nx_ && state_[cell(k, j)] == kMixed) {
+  // A cell of known state is sought to the right and upwards at once, and the shorter walk
+  // wins: along a sliver (a spike a million times longer than wide) every cell of its row is
+  // mixed, but the cells above it are not.
+  std::size_t k = i + 1;  // right: cells [i, k) of row j are mixed
+  std::size_t m = j + 1;  // up: cells [j, m) of column i are mixed
+  for (;;) {
+    if (k >= nx_ || state_[cell(k, j)] != kMixed) {
+      const bool target_inside = k < nx_ && state_[cell(k, j)] == kInside;
+      thread_local std::vector<std::uint32_t> scratch;
+      const bool odd = odd_crossings(p, i, k, j, scratch);
+      return (target_inside != odd) ? Location::inside : Location::outside;
+    }
+    if (m >= ny_ || state_[cell(i, m)] != kMixed) {
+      const bool target_inside = m < ny_ && state_[cell(i, m)] == kInside;
+      thread_local std::vector<std::uint32_t> scratch;
+      const bool odd = odd_crossings_up(p, i, j, m, scratch);
+      return (target_inside != odd) ? Location::inside : Location::outside;
+    }
     ++k;
+    ++m;
   }
-  const bool target_inside = k < nx_ && state_[cell(k, j)] == kInside;
-  thread_local std::vector<std::uint32_t> scratch;
-  const bool odd = odd_crossings(p, i, k, j, scratch);
-  return (target_inside != odd) ? Location::inside : Location::outside;
 }
 
 Location EdgeGrid::locate(Point p) const {

@@ -62,6 +62,11 @@ class EdgeGrid {
   // cells [i, k) of row j. scratch is reused storage.
   [[nodiscard]] bool odd_crossings(Point p, std::size_t i, std::size_t k, std::size_t j,
                                    std::vector<std::uint32_t>& scratch) const;
+  // The same upwards: parity of the crossings of the vertical segment p -> (p.x, Y[m]) with the
+  // edges listed in cells [j, m) of column i (half-open rule in x: exactly one endpoint strictly
+  // right of the line).
+  [[nodiscard]] bool odd_crossings_up(Point p, std::size_t i, std::size_t j, std::size_t m,
+                                      std::vector<std::uint32_t>& scratch) const;
   [[nodiscard]] Location locate_in(Point p, std::size_t i, std::size_t j) const;
 
   std::span<const Point> v_;

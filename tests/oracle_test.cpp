@@ -668,7 +668,6 @@ TEST(OracleShapesList, IsNotEmpty) {
 struct SyntheticDomain {
   const char* name;
   const char* wkt;
-  bool slow = false;  // the library needs ~1 ms per query here (see the sliver note): few queries
 };
 
 void PrintTo(const SyntheticDomain& d, std::ostream* os) {
@@ -692,10 +691,10 @@ const SyntheticDomain kSynthetic[] = {
      "1000000000000010 1000000000000005.5,1000000000000004.125 1000000000000009,"
      "1000000000000000 1000000000000005,1000000000000000 1000000000000000))"},
     // Slivers: a unit-wide triangle 1e-15 and 1e-300 high. (The grid degenerates to 65536 x 1
-    // cells, all crossed by the long edges, so each query merges the edge lists of up to 65536
-    // cells: correct but about 1 ms per query, hence few queries.)
-    {"sliver_1e-15", "POLYGON((0 0,1 0,0.5 1e-15,0 0))", true},
-    {"sliver_1e-300", "POLYGON((0 0,1 0,0.5 1e-300,0 0))", true},
+    // cells, all crossed by the long edges: point queries decide by the upward walk, which is
+    // one cell long here, instead of merging the edge lists of the whole row.)
+    {"sliver_1e-15", "POLYGON((0 0,1 0,0.5 1e-15,0 0))"},
+    {"sliver_1e-300", "POLYGON((0 0,1 0,0.5 1e-300,0 0))"},
     // A nearly vertical edge from x = -1e-310 to x = 0 (a column line of the grid), 1.5 high:
     // its slope overflows.
     {"steep_subnormal_edge", "POLYGON((-1 -1,-1e-310 -1,0 0.5,1 0.5,1 1,-1 1,-1 -1))"},
@@ -718,8 +717,7 @@ TEST_P(OracleSynthetic, LocateAndContainsMatchExactBruteForce) {
   } catch (const fp::Error& e) {
     FAIL() << s.name << ": a valid domain is rejected: " << e.what();
   }
-  check_against_oracle(s.name, s.wkt, *domain,
-                       s.slow ? QueryBudget{25, 6, 3, 6, 2, 3} : QueryBudget{1000, 300, 100, 300});
+  check_against_oracle(s.name, s.wkt, *domain, QueryBudget{1000, 300, 100, 300});
 }
 
 INSTANTIATE_TEST_SUITE_P(Oracle, OracleSynthetic, ::testing::ValuesIn(kSynthetic),
