@@ -44,7 +44,7 @@ std::string quote(std::string_view s) {
 // the start of the file.
 class Lines {
  public:
-  Lines(std::istream& in, std::string_view source) : in_(in), source_(source) {}
+  Lines(std::istream& in, std::string_view source) : in_(in), source_(source.empty() ? "<input>" : source) {}
 
   bool next() {
     if (!std::getline(in_, line_)) {

@@ -298,6 +298,16 @@ TEST(IoRead, MalformedYadeNamesTheLine) {
   }
 }
 
+TEST(IoRead, UnnamedSource) {
+  std::istringstream in("x,y,r\n1,2\n");
+  try {
+    (void)fp::read_csv(in, "");
+    ADD_FAILURE() << "no error";
+  } catch (const fp::DiskFileError& e) {
+    EXPECT_EQ(std::string(e.what()), "<input>:2: expected 3 comma-separated numbers, got '1,2'");
+  }
+}
+
 TEST(IoRead, ReadDisksErrors) {
   const ScratchDir dir;
   try {
@@ -440,6 +450,13 @@ TEST(IoWriteFile, FailureInTheMiddleLeavesTheOldFileAndNoTemporary) {
   EXPECT_EQ(message, "cannot write '" + target.string() + "': File too large");
   EXPECT_EQ(slurp(target), "old contents\n");
   EXPECT_EQ(dir.entries(), std::vector<std::string>{"p.csv"});
+}
+
+TEST(IoWriteFile, WriterErrorLeavesNoFile) {
+  const ScratchDir dir;
+  const std::vector<fp::Disk> outside = {{{5, 5}, 1}};  // not in the domain's bounding box
+  EXPECT_THROW(fp::write_file(dir.path() / "p.data", fp::Format::lammps, l_shape(), outside), fp::OptionError);
+  EXPECT_TRUE(dir.entries().empty());
 }
 
 TEST(IoWriteFile, EveryFormatMatchesItsStreamWriter) {

@@ -115,7 +115,8 @@ void write_file(const std::filesystem::path& path, Format format, const Domain& 
 /// exactly three comma-separated numbers per line (spaces or tabs around a number are allowed;
 /// CRLF line ends are accepted; no blank lines); every number finite; every radius > 0. Numbers
 /// are parsed exactly and independently of the locale (std::from_chars: "1.5", "-2e-3", no "+").
-/// `source_name` (a file name) goes into the messages. Throws DiskFileError naming the line.
+/// `source_name` (a file name; "<input>" if empty) goes into the messages. Throws DiskFileError naming
+/// the line.
 [[nodiscard]] std::vector<Disk> read_csv(std::istream& in, std::string_view source_name);
 
 /// Reads Yade text as written by write_yade: lines of four numbers "x y z r" separated by spaces
