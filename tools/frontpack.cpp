@@ -370,7 +370,7 @@ struct FillArgs {
   std::string method = "closed";
   std::string radius = "uniform:0.01,0.05";
   std::uint64_t seed = 0;
-  std::size_t max_disks = 50'000'000;
+  std::size_t max_disks = frontpack::FillOptions{}.max_disks;
   std::vector<std::string> outputs;
   std::string format;
   std::string json;
