@@ -12,6 +12,7 @@
 
 #include "edge_grid.hpp"
 #include "format.hpp"
+#include "read_file.hpp"
 #include "ring_set.hpp"
 #include "wkt.hpp"
 
@@ -71,22 +72,6 @@ std::shared_ptr<const Domain::Impl> build(const detail::RawParts& parts, bool re
   return impl;
 }
 
-std::string read_file(const std::filesystem::path& path) {
-  std::error_code ec;
-  if (std::filesystem::is_directory(path, ec)) {
-    throw IoError("cannot read '" + path.string() + "': it is a directory", path.string());
-  }
-  std::ifstream in(path, std::ios::binary);
-  if (!in) {
-    throw IoError("cannot open '" + path.string() + "': " + std::strerror(errno), path.string());
-  }
-  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  if (in.bad()) {
-    throw IoError("cannot read '" + path.string() + "'", path.string());
-  }
-  return text;
-}
-
 // Parses and validates WKT text; `source_name` (a file name, or empty) goes into the messages.
 std::shared_ptr<const Domain::Impl> from_wkt_text(std::string_view text, const std::string& source_name) {
   std::vector<detail::ParsedPolygon> parsed;
@@ -138,7 +123,7 @@ Domain Domain::from_wkt(std::string_view wkt) {
 }
 
 Domain Domain::from_wkt_file(const std::filesystem::path& path) {
-  const std::string text = read_file(path);
+  const std::string text = detail::read_text_file(path);
   return Domain(from_wkt_text(text, path.string()));
 }
 

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "frontpack/io.hpp"
+#include "read_file.hpp"
 
 namespace frontpack {
 
@@ -209,14 +210,7 @@ std::vector<Disk> read_disks(const std::filesystem::path& path) {
     throw OptionError("'" + path.string() + "': reading " + to_string(format) +
                       " files is not supported; frontpack reads .csv and Yade text (.txt, .yade)");
   }
-  std::error_code ec;
-  if (std::filesystem::is_directory(path, ec)) {
-    throw IoError("cannot read '" + path.string() + "': it is a directory", path.string());
-  }
-  std::ifstream in(path, std::ios::binary);
-  if (!in) {
-    throw IoError("cannot open '" + path.string() + "': " + std::strerror(errno), path.string());
-  }
+  std::ifstream in = detail::open_for_reading(path);
   return format == Format::csv ? read_csv(in, path.string()) : read_yade(in, path.string());
 }
 

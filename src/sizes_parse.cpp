@@ -14,6 +14,7 @@
 
 #include "format.hpp"
 #include "frontpack/fill.hpp"
+#include "read_file.hpp"
 
 namespace frontpack {
 
@@ -319,20 +320,7 @@ SizeTable parse_size_table(std::string_view text, std::string_view source) {
 }
 
 SizeTable read_size_table(const std::filesystem::path& path) {
-  std::error_code ec;
-  if (std::filesystem::is_directory(path, ec)) {
-    throw IoError("cannot read '" + path.string() + "': it is a directory", path.string());
-  }
-  std::ifstream in(path, std::ios::binary);
-  if (!in) {
-    throw IoError("cannot open '" + path.string() + "'", path.string());
-  }
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (in.bad()) {
-    throw IoError("cannot read '" + path.string() + "'", path.string());
-  }
-  return parse_size_table(text.str(), path.string());
+  return parse_size_table(detail::read_text_file(path), path.string());
 }
 
 Radii radii_from_table(const SizeTable& table, Basis basis) {
