@@ -93,7 +93,7 @@ class Front {
       }
       if (req_.tick && placed() - last_tick >= tick_every_) {
         last_tick = placed();
-        if (!req_.tick(placed())) {
+        if (!req_.tick(placed(), area_)) {
           result.cancelled = true;
           break;
         }
@@ -110,6 +110,7 @@ class Front {
         continue;
       }
       const std::int32_t placed_node = placement.node;
+      area_ += r * r;
       r = draw();
       // Visit order. Closed form (Fig. 4): after D4 on D1 -> D2, the next segment is D2 -> D3,
       // the one after the new disk's. Open form (Sec. 3): along the layer (D1 -> Bb after D1),
@@ -571,6 +572,7 @@ class Front {
   std::size_t window_ = 5;
   std::size_t budget_;
   std::size_t tick_every_ = 1 << 14;
+  double area_ = 0;  // sum of r^2 over the disks placed, for progress reports
   double ox_ = 0;
   double oy_ = 0;
 

@@ -336,6 +336,33 @@ TEST(Fill, ProgressAndCancellation) {
   EXPECT_TRUE(fp::certify(d, p.disks).overlapping.empty());
 }
 
+// Progress is the fraction of the area to fill that is filled: it grows with every report, is
+// close to 1 at the last report before the end (the density estimate is good), and is 1 at the
+// end, with the area of every disk generated.
+TEST(Fill, ProgressIsTheAreaFilled) {
+  const fp::Domain d = fp::Domain::from_wkt("POLYGON((0 0,1 0,1 1,0 1,0 0))");
+  fp::FillOptions o;
+  o.radii = fp::Radii::uniform(0.001, 0.002);
+  fp::Generator g(d, o);
+  std::vector<fp::Progress> reports;
+  g.on_progress([&](const fp::Progress& p) {
+    reports.push_back(p);
+    return true;
+  });
+  const fp::Packing p = g.run();
+  ASSERT_GE(reports.size(), 3U);
+  for (std::size_t i = 1; i < reports.size(); ++i) {
+    EXPECT_GT(reports[i].fraction, reports[i - 1].fraction);
+    EXPECT_GT(reports[i].area, reports[i - 1].area);
+  }
+  const fp::Progress& last_tick = reports[reports.size() - 2];
+  EXPECT_GT(last_tick.fraction, 0.6);
+  EXPECT_LE(last_tick.fraction, 0.99);
+  EXPECT_EQ(reports.back().fraction, 1.0);
+  EXPECT_EQ(reports.back().disks, p.certificate.generated);
+  EXPECT_GE(reports.back().area, covered_fraction(d, p.disks) * d.area());
+}
+
 // The overlap pass works tile by tile beyond 2^18 disks. 600,000 disks on a jittered lattice with
 // radii that make many of them overlap (also across tile borders) must give exactly the pairs
 // of a brute force. Coordinates and radii are multiples of 2^-20 below 2^10, so the brute force

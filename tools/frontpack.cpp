@@ -228,7 +228,7 @@ class InterruptScope {
   void (*previous_)(int) = SIG_DFL;
 };
 
-// On a terminal only, after half a second: "[#####.....]  42%  123456 disks  1.2e+06 disks/s  ETA 3 s".
+// On a terminal only, after half a second: "[#####.....]  42% of area  123456 disks  1.2e+06 disks/s  ETA 3 s".
 class ProgressBar {
  public:
   explicit ProgressBar(bool enabled) : enabled_(enabled && ::isatty(STDERR_FILENO) == 1) {}
@@ -255,9 +255,10 @@ class ProgressBar {
     const double rate = static_cast<double>(p.disks) / t;
     const double eta = f > 0.01 ? t * (1 - f) / f : NAN;
     if (std::isfinite(eta)) {
-      std::snprintf(tail, sizeof tail, "] %3.0f%%  %zu disks  %.3g disks/s  ETA %.0f s", 100 * f, p.disks, rate, eta);
+      std::snprintf(tail, sizeof tail, "] %3.0f%% of area  %zu disks  %.3g disks/s  ETA %.0f s", 100 * f, p.disks, rate,
+                    eta);
     } else {
-      std::snprintf(tail, sizeof tail, "] %3.0f%%  %zu disks  %.3g disks/s", 100 * f, p.disks, rate);
+      std::snprintf(tail, sizeof tail, "] %3.0f%% of area  %zu disks  %.3g disks/s", 100 * f, p.disks, rate);
     }
     line.append(tail).append("\033[K");
     std::fputs(line.c_str(), stderr);
