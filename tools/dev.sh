@@ -60,10 +60,16 @@ run_fuzzers() {
   for t in "${fuzz_targets[@]}"; do
     mkdir -p "build/fuzz/corpus/$t" "build/fuzz/findings/$t"
     echo "==> fuzzing $t for $1 s"
+    local rc=0
     "build/fuzz/tests/fuzz/fuzz_$t" -max_total_time="$1" -timeout=30 -rss_limit_mb=4096 -print_final_stats=1 \
       -artifact_prefix="build/fuzz/findings/$t/" "build/fuzz/corpus/$t" "tests/fuzz/corpus/$t" \
-      "tests/fuzz/regressions/$t" 2>&1 | grep -E '^(stat::|==|SUMMARY|frontpack fuzz|artifact)' || true
-    test "${PIPESTATUS[0]}" -eq 0 || { echo "error: fuzz_$t found a problem (see build/fuzz/findings/$t/)" >&2; exit 1; }
+      "tests/fuzz/regressions/$t" > "build/fuzz/findings/$t.log" 2>&1 || rc=$?
+    grep -E '^(stat::|==|SUMMARY|frontpack fuzz|artifact|INFO: +[0-9]+ files found)' "build/fuzz/findings/$t.log" || true
+    if [ "$rc" -ne 0 ]; then
+      tail -n 40 "build/fuzz/findings/$t.log" >&2
+      echo "error: fuzz_$t failed (exit $rc; log and inputs in build/fuzz/findings/)" >&2
+      exit 1
+    fi
   done
 }
 
