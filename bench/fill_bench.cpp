@@ -2,7 +2,8 @@
 // one thread. Run each alone so that the peak-memory counter means something:
 //   build/release/bench/frontpack_bench_fill --benchmark_filter=Core
 //   build/release/bench/frontpack_bench_fill --benchmark_filter=Pipeline/1
-//   build/release/bench/frontpack_bench_fill --benchmark_filter=Pipeline/10
+//   build/release/bench/frontpack_bench_fill --benchmark_filter=Pipeline/10/
+//   build/release/bench/frontpack_bench_fill --benchmark_filter=Pipeline/100/   (100M disks, 5.4 GB)
 // "Core" times the advancing front alone (FillStats::seconds_front, manual time); "Pipeline"
 // times fill() end to end: generation + exact cull + CGAL overlap pass.
 #include <benchmark/benchmark.h>
@@ -30,6 +31,7 @@ fp::FillOptions options(fp::Method m) {
   o.method = m;
   o.radii = fp::Radii::uniform(5e-4, 5e-3);
   o.seed = 2003;
+  o.max_disks = 200'000'000;  // the 100M-disk run
   return o;
 }
 
@@ -86,6 +88,7 @@ BENCHMARK(BM_Pipeline)
     ->Args({1, static_cast<int>(fp::Method::open)})
     ->Args({1, static_cast<int>(fp::Method::closed)})
     ->Args({10, static_cast<int>(fp::Method::open)})
+    ->Args({100, static_cast<int>(fp::Method::open)})  // ~100M disks, ~5.4 GB, ~100 s: run alone
     ->Unit(benchmark::kMillisecond)
     ->Iterations(1);
 
