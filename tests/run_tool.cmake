@@ -6,6 +6,7 @@
 #   PNG        FILE;WIDTH;HEIGHT: a PNG file (signature checked) of exactly that size (IHDR chunk)
 #   JSON       FILE;KEY=REGEX;...: members of a JSON file (KEY is a /-separated path, e.g.
 #              certificate/dropped), read with string(JSON), each matching its regular expression
+#   FILE_MATCHES  FILE;REGEX: a text file that must exist and match the regular expression
 #   SILENT     if true, the run must print nothing at all
 if(OUT_DIR)
   file(REMOVE_RECURSE ${OUT_DIR})
@@ -86,5 +87,16 @@ if(JSON)
       message(FATAL_ERROR "${json_file}: ${key_path} is '${value}', expected to match '${value_regex}'")
     endif()
   endforeach()
+endif()
+if(FILE_MATCHES)
+  list(GET FILE_MATCHES 0 match_file)
+  list(GET FILE_MATCHES 1 match_regex)
+  if(NOT EXISTS ${match_file})
+    message(FATAL_ERROR "missing output file: ${match_file}")
+  endif()
+  file(READ ${match_file} match_text)
+  if(NOT match_text MATCHES "${match_regex}")
+    message(FATAL_ERROR "${match_file} does not match '${match_regex}'")
+  endif()
 endif()
 message(STATUS "ok: exit ${code}")

@@ -184,12 +184,12 @@ std::vector<Output> resolve_outputs(const std::vector<std::string>& paths, const
 }
 
 void write_output(const Output& o, const frontpack::Domain& domain, std::span<const frontpack::Disk> disks,
-                  int width_px) {
+                  const frontpack_tool::RenderOptions& picture_options) {
   if (const auto* picture = std::get_if<frontpack_tool::Picture>(&o.format)) {
-    frontpack_tool::render(o.path, *picture, domain, disks, {.width_px = width_px});
+    frontpack_tool::render(o.path, *picture, domain, disks, picture_options);
   } else {
     frontpack::WriteOptions options;
-    options.svg.width_px = width_px;
+    options.svg.width_px = picture_options.width_px;
     frontpack::write_file(o.path, std::get<frontpack::Format>(o.format), domain, disks, options);
   }
 }
@@ -376,6 +376,7 @@ struct FillArgs {
   std::string format;
   std::string json;
   int width = 1200;
+  bool no_histogram = false;
   bool quiet = false;
 };
 
@@ -420,8 +421,10 @@ int run_fill(const FillArgs& a) {
   const frontpack::PackingStats s = frontpack::measure(domain, p.disks, {.requested = options.radii});
   const double seconds_stats = seconds_since(t_stats);
 
+  const frontpack_tool::RenderOptions picture{
+      .width_px = a.width, .histogram = !a.no_histogram, .requested = options.radii, .requested_spec = a.radius};
   for (const Output& o : outputs) {
-    write_output(o, domain, p.disks, a.width);
+    write_output(o, domain, p.disks, picture);
   }
   const frontpack::Certificate& c = p.certificate;
   const double seconds_fill = p.stats.seconds_front + p.stats.seconds_cull + p.stats.seconds_overlap;
@@ -575,19 +578,29 @@ struct RenderArgs {
   std::string disks;
   std::vector<std::string> outputs;
   std::string format;
+  std::string radius;
   int width = 1200;
+  bool no_histogram = false;
   bool quiet = false;
 };
 
 int run_render(const RenderArgs& a) {
+  frontpack_tool::RenderOptions picture;
+  picture.width_px = a.width;
+  picture.histogram = !a.no_histogram;
+  if (!a.radius.empty()) {
+    picture.requested = frontpack::parse_radii(a.radius);
+    picture.requested_spec = a.radius;
+  }
   const frontpack::Domain domain = frontpack::Domain::from_wkt_file(a.domain);
   const std::vector<frontpack::Disk> disks = frontpack::read_disks(a.disks);
   const std::vector<Output> outputs = resolve_outputs(a.outputs, a.format, true);
   for (const Output& o : outputs) {
-    write_output(o, domain, disks, a.width);
+    write_output(o, domain, disks, picture);
     if (!a.quiet) {
       std::cerr << "wrote:       " << o.path.string() << " (" << format_name(o.format) << ", " << a.width << " x "
-                << frontpack_tool::picture_height(domain, a.width) << ", " << disks.size() << " disks)\n";
+                << frontpack_tool::picture_height(domain, a.width, picture.histogram) << ", " << disks.size()
+                << " disks)\n";
     }
   }
   return ok;
@@ -704,6 +717,8 @@ int main(int argc, char** argv) {
                    "vtp, png, svg, pdf");
   fill->add_option("--json", fill_args.json, "write the summary as JSON to this file");
   fill->add_option("--width", fill_args.width, "picture width in pixels")->capture_default_str();
+  fill->add_flag("--no-histogram", fill_args.no_histogram,
+                 "pictures without the size-distribution panel (histogram by area, KS distance)");
   fill->add_flag("-q,--quiet", fill_args.quiet, "print nothing but errors (no summary, no progress bar)");
   fill->footer(
       "Example:\n"
@@ -732,13 +747,21 @@ int main(int argc, char** argv) {
   render->add_option("DISKS", render_args.disks, "disk file: .csv or .txt/.yade")->required();
   render->add_option("-o,--output", render_args.outputs, "picture file(s): .png, .svg or .pdf")->required();
   render->add_option("--format", render_args.format, "png, svg or pdf instead of the extension");
-  render->add_option("--width", render_args.width, "width in pixels (the height follows the domain)")
+  render->add_option("--width", render_args.width, "width in pixels (height: the domain's, plus the histogram)")
       ->capture_default_str();
+  render->add_option("--radius", render_args.radius,
+                     "the requested radius distribution (a --radius SPEC of fill): drawn over the histogram, "
+                     "with the KS distance by area");
+  render->add_flag("--no-histogram", render_args.no_histogram,
+                   "the packing alone, without the size-distribution panel below it");
   render->add_flag("-q,--quiet", render_args.quiet, "print nothing but errors");
   render->footer(
       "Example:\n"
       "  frontpack fill shapes/plate_with_holes.wkt --radius uniform:0.005,0.02 -o packing.csv\n"
-      "  frontpack render shapes/plate_with_holes.wkt packing.csv -o packing.png --width 800");
+      "  frontpack render shapes/plate_with_holes.wkt packing.csv -o packing.png --width 800 \\\n"
+      "      --radius uniform:0.005,0.02\n"
+      "Below the packing, a histogram of the radii by area (bars coloured as the disks: the colour key), the\n"
+      "requested distribution's area per bin as a line and the KS distance by area; --no-histogram omits it.");
 
   StatsArgs stats_args;
   auto* stats = app.add_subcommand("stats", "Packing statistics: fractions, coordination, radii");

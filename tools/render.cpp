@@ -13,10 +13,12 @@
 #include <memory>
 #include <numbers>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "atomic_file.hpp"
 #include "frontpack/fill.hpp"  // OptionError
+#include "frontpack/stats.hpp"
 
 namespace frontpack_tool {
 
@@ -50,9 +52,40 @@ Rgb viridis(double t) {
   return {mix(0), mix(1), mix(2)};
 }
 
+// Where Cairo's output goes. For SVG, `insert` (a <title> element) is written right after the
+// root element's start tag: Cairo writes text as glyph outlines, so without it the caption would
+// not be in the file as text.
+struct Sink {
+  std::FILE* file = nullptr;
+  std::string insert;
+  std::size_t matched = 0;  // characters of "<svg" matched so far
+  bool in_root_tag = false;
+};
+
 cairo_status_t write_to_file(void* closure, const unsigned char* data, unsigned int length) {
-  return std::fwrite(data, 1, length, static_cast<std::FILE*>(closure)) == length ? CAIRO_STATUS_SUCCESS
-                                                                                  : CAIRO_STATUS_WRITE_ERROR;
+  Sink& sink = *static_cast<Sink*>(closure);
+  const auto put = [&](const void* bytes, std::size_t n) { return std::fwrite(bytes, 1, n, sink.file) == n; };
+  std::size_t from = 0;
+  if (!sink.insert.empty()) {
+    static constexpr std::string_view kRoot = "<svg";
+    for (std::size_t i = 0; i < length; ++i) {
+      const char c = static_cast<char>(data[i]);
+      if (sink.in_root_tag) {
+        if (c == '>') {
+          if (!put(data, i + 1) || !put(sink.insert.data(), sink.insert.size())) {
+            return CAIRO_STATUS_WRITE_ERROR;
+          }
+          sink.insert.clear();
+          from = i + 1;
+          break;
+        }
+      } else {
+        sink.matched = c == kRoot[sink.matched] ? sink.matched + 1 : (c == '<' ? 1 : 0);
+        sink.in_root_tag = sink.matched == kRoot.size();
+      }
+    }
+  }
+  return put(data + from, length - from) ? CAIRO_STATUS_SUCCESS : CAIRO_STATUS_WRITE_ERROR;
 }
 
 struct SurfaceDeleter {
@@ -85,6 +118,27 @@ struct View {
 
 constexpr double kMarginFraction = 0.02;
 
+// Disk colours: 64 levels of viridis, linear in radius from the smallest disk to the largest.
+constexpr std::size_t kLevels = 64;
+struct ColourScale {
+  double rmin = INFINITY;
+  double rmax = -INFINITY;
+  explicit ColourScale(std::span<const frontpack::Disk> disks) {
+    for (const frontpack::Disk& d : disks) {
+      rmin = std::min(rmin, d.radius);
+      rmax = std::max(rmax, d.radius);
+    }
+  }
+  [[nodiscard]] std::size_t level(double r) const {
+    if (!(rmax > rmin)) {
+      return kLevels / 2;
+    }
+    const double t = (r - rmin) / (rmax - rmin);
+    return std::min(kLevels - 1, static_cast<std::size_t>(std::max(0.0, t) * kLevels));
+  }
+  [[nodiscard]] static Rgb colour(std::size_t level) { return viridis((static_cast<double>(level) + 0.5) / kLevels); }
+};
+
 void draw(cairo_t* cr, const View& view, Picture format, const frontpack::Domain& domain,
           std::span<const frontpack::Disk> disks, int width_px) {
   cairo_set_source_rgb(cr, 1, 1, 1);
@@ -114,20 +168,8 @@ void draw(cairo_t* cr, const View& view, Picture format, const frontpack::Domain
 
   // The disks, grouped by colour (64 levels of the colour map) so that each group is filled as
   // a few large paths rather than one fill per disk: fast for millions of disks, small SVGs.
-  double rmin = INFINITY;
-  double rmax = -INFINITY;
-  for (const frontpack::Disk& d : disks) {
-    rmin = std::min(rmin, d.radius);
-    rmax = std::max(rmax, d.radius);
-  }
-  constexpr std::size_t kLevels = 64;
-  const auto level_of = [&](double r) -> std::size_t {
-    if (!(rmax > rmin)) {
-      return kLevels / 2;
-    }
-    const double t = (r - rmin) / (rmax - rmin);
-    return std::min(kLevels - 1, static_cast<std::size_t>(std::max(0.0, t) * kLevels));
-  };
+  const ColourScale colours(disks);
+  const auto level_of = [&](double r) { return colours.level(r); };
   std::vector<std::uint32_t> start(kLevels + 1, 0);
   for (const frontpack::Disk& d : disks) {
     ++start[level_of(d.radius) + 1];
@@ -174,7 +216,7 @@ void draw(cairo_t* cr, const View& view, Picture format, const frontpack::Domain
   };
   constexpr std::size_t kChunk = 4096;
   for (std::size_t k = 0; k < kLevels; ++k) {
-    const Rgb fill = viridis((static_cast<double>(k) + 0.5) / kLevels);
+    const Rgb fill = ColourScale::colour(k);
     for (std::size_t b = start[k]; b < start[k + 1]; b += kChunk) {
       const std::size_t e = std::min<std::size_t>(start[k + 1], b + kChunk);
       if (disk_path(b, e, true)) {
@@ -207,6 +249,308 @@ View make_view(const frontpack::Domain& domain, int width_px) {
   return view;
 }
 
+int font_px(int width_px) {
+  return std::clamp(width_px / 80, 10, 18);
+}
+
+int packing_height(const frontpack::Domain& domain, int width_px) {
+  const View view = make_view(domain, width_px);
+  return static_cast<int>(std::ceil(domain.bbox().height() * view.scale + 2 * view.margin));
+}
+
+std::string format_g(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%g", v);
+  return buf;
+}
+
+// Text for Cairo's toy API must be valid UTF-8: user text (a --radius spec) is reduced to
+// printable ASCII.
+std::string printable(std::string_view text) {
+  std::string out(text);
+  for (char& c : out) {
+    if (static_cast<unsigned char>(c) < 0x20 || static_cast<unsigned char>(c) >= 0x7f) {
+      c = '?';
+    }
+  }
+  return out;
+}
+
+std::string xml_escaped(std::string_view text) {
+  std::string out;
+  for (const char c : text) {
+    if (c == '&') {
+      out.append("&amp;");
+    } else if (c == '<') {
+      out.append("&lt;");
+    } else if (c == '>') {
+      out.append("&gt;");
+    } else {
+      out.push_back(c);
+    }
+  }
+  return out;
+}
+
+// 1, 2 or 5 times a power of ten, at least `raw` (> 0).
+double nice_step(double raw) {
+  const double p = std::pow(10.0, std::floor(std::log10(raw)));
+  for (const double m : {1.0, 2.0, 5.0, 10.0}) {
+    if (m * p >= raw) {
+      return m * p;
+    }
+  }
+  return 10 * p;
+}
+
+// The size-distribution panel's content: bins of equal width in radius over the achieved and
+// requested ranges, the share of the total disk area in each (achieved and requested), and the
+// caption.
+struct Panel {
+  std::vector<double> edges;      // bins + 1 edges; bin b is [edges[b], edges[b + 1]), the last one closed
+  std::vector<double> achieved;   // share of the disks' total area per bin
+  std::vector<double> requested;  // the requested distribution's, per bin (empty if none)
+  std::string caption[2];
+};
+
+Panel make_panel(std::span<const frontpack::Disk> disks, const RenderOptions& options) {
+  Panel panel;
+  std::vector<double> radii;
+  radii.reserve(disks.size());
+  for (const frontpack::Disk& d : disks) {
+    radii.push_back(d.radius);
+  }
+  const frontpack::RadiusDistribution* request = options.requested ? &options.requested->distribution() : nullptr;
+  const frontpack::SizeStats s = frontpack::measure_sizes(radii, request, 0);
+  const std::string spec =
+      printable(options.requested_spec.empty() && request != nullptr ? request->describe() : options.requested_spec);
+
+  double lo = radii.empty() ? INFINITY : s.rmin;
+  double hi = radii.empty() ? -INFINITY : s.rmax;
+  if (request != nullptr) {
+    lo = std::min(lo, request->min());
+    hi = std::max(hi, request->max());
+  }
+  if (!(lo <= hi)) {
+    panel.caption[0] = "no disks";
+    return panel;
+  }
+  // About sqrt(n) bins, 5 to 40, and at least 8 px wide; an odd number around a single radius,
+  // so that it sits in the middle of the axis.
+  const double root_n = std::sqrt(static_cast<double>(radii.size()));
+  std::size_t bins = static_cast<std::size_t>(std::clamp(std::round(root_n), 5.0, 40.0));
+  bins = std::min(bins, static_cast<std::size_t>(std::max(1, options.width_px / 8)));
+  if (!(hi > lo)) {
+    lo *= 0.9;
+    hi *= 1.1;
+    bins |= 1;
+  }
+  for (std::size_t b = 0; b <= bins; ++b) {
+    panel.edges.push_back(b == bins ? hi : lo + (hi - lo) * static_cast<double>(b) / static_cast<double>(bins));
+  }
+  panel.achieved.assign(bins, 0.0);
+  double total = 0;
+  for (const double r : radii) {
+    total += r * r;
+  }
+  for (const double r : radii) {
+    const double t = std::floor((r - lo) / (hi - lo) * static_cast<double>(bins));
+    auto b = static_cast<std::size_t>(std::clamp(t, 0.0, static_cast<double>(bins - 1)));
+    // The computed index may be off by one at an edge: settle on the edges themselves.
+    while (b > 0 && r < panel.edges[b]) {
+      --b;
+    }
+    while (b + 1 < bins && r >= panel.edges[b + 1]) {
+      ++b;
+    }
+    panel.achieved[b] += r * r / total;
+  }
+  if (request != nullptr) {
+    // Mass at an edge belongs to the bin above it, as for the disks.
+    const auto below = [&](std::size_t b) {
+      return b == 0 ? 0.0 : b == bins ? 1.0 : request->area_cdf(std::nextafter(panel.edges[b], 0.0));
+    };
+    for (std::size_t b = 0; b < bins; ++b) {
+      panel.requested.push_back(std::max(0.0, below(b + 1) - below(b)));
+    }
+  }
+
+  char buf[160];
+  std::snprintf(buf, sizeof buf, "Disk area per radius bin (%zu disks, bins of %.3g)%s", s.count,
+                (hi - lo) / static_cast<double>(bins), request != nullptr ? "; line: requested" : "");
+  panel.caption[0] = buf;
+  if (request != nullptr && s.count > 0) {
+    std::snprintf(buf, sizeof buf, "KS by area %.4f (requested: ", s.ks_area);
+    panel.caption[1] = buf;
+    panel.caption[1].append(spec).append(")");
+  } else if (request != nullptr) {
+    panel.caption[1] = "no disks (requested: ";
+    panel.caption[1].append(spec).append(")");
+  } else {
+    std::snprintf(buf, sizeof buf, "radius min %g, median by area %g, max %g", s.rmin, s.median_area, s.rmax);
+    panel.caption[1] = buf;
+  }
+  return panel;
+}
+
+double text_width(cairo_t* cr, const std::string& text) {
+  cairo_text_extents_t e;
+  cairo_text_extents(cr, text.c_str(), &e);
+  return e.x_advance;
+}
+
+void show_text(cairo_t* cr, double x, double y, const std::string& text) {
+  cairo_move_to(cr, x, y);
+  cairo_show_text(cr, text.c_str());
+}
+
+// Draws the panel in the band [top, top + histogram_height(width_px)) of the picture.
+void draw_panel(cairo_t* cr, const Panel& panel, const ColourScale& colours, double top, int width_px) {
+  const double w = width_px;
+  const double f = font_px(width_px);
+  const double bottom = top + histogram_height(width_px);
+  const double margin = kMarginFraction * w;
+  cairo_select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
+  const auto caption_line = [&](int k, double baseline) {
+    // Shrunk to fit the width if need be (a few rounds: hinted advances do not scale exactly).
+    const double available = w - 2 * margin;
+    double size = f;
+    cairo_set_font_size(cr, size);
+    for (int round = 0; round < 4; ++round) {
+      const double tw = text_width(cr, panel.caption[k]);
+      if (tw <= available || size <= 1) {
+        break;
+      }
+      size = std::max(1.0, size * 0.98 * available / tw);
+      cairo_set_font_size(cr, size);
+    }
+    cairo_set_source_rgb(cr, 0.1, 0.1, 0.1);
+    show_text(cr, margin, baseline, panel.caption[k]);
+    cairo_set_font_size(cr, f);
+  };
+  caption_line(0, bottom - 1.8 * f);
+  caption_line(1, bottom - 0.5 * f);
+  const std::size_t bins = panel.achieved.size();
+  if (bins == 0) {
+    return;
+  }
+
+  // y axis: nice ticks from 0 to at least the tallest bar or step.
+  double ymax = 0;
+  for (std::size_t b = 0; b < bins; ++b) {
+    ymax = std::max({ymax, panel.achieved[b], panel.requested.empty() ? 0.0 : panel.requested[b]});
+  }
+  const double ystep = nice_step(ymax > 0 ? ymax / 4 : 0.25);
+  const double ytop = std::max(1.0, std::ceil(ymax / ystep - 1e-9)) * ystep;
+  const int yticks = static_cast<int>(std::lround(ytop / ystep));
+  double ylabel_width = 0;
+  for (int k = 0; k <= yticks; ++k) {
+    ylabel_width = std::max(ylabel_width, text_width(cr, format_g(k * ystep)));
+  }
+  const std::string lo_label = format_g(panel.edges.front());
+  const std::string hi_label = format_g(panel.edges.back());
+  const double left = margin + 1.5 * f + ylabel_width + 0.5 * f;
+  const double right = w - margin - std::max(0.5 * text_width(cr, hi_label), 0.2 * f);
+  const double plot_top = top + 0.6 * f;
+  const double axis_y = bottom - 5.8 * f;
+  if (!(right - left >= 4 && axis_y - plot_top >= 4)) {
+    return;  // too narrow a picture for a plot: the caption only
+  }
+  const double lo = panel.edges.front();
+  const double hi = panel.edges.back();
+  const auto px = [&](double r) { return left + (r - lo) / (hi - lo) * (right - left); };
+  const auto py = [&](double v) { return axis_y - v / ytop * (axis_y - plot_top); };
+
+  // Grid lines and y tick labels.
+  cairo_set_line_width(cr, 1);
+  for (int k = 0; k <= yticks; ++k) {
+    const double v = k * ystep;
+    const std::string label = format_g(v);
+    cairo_set_source_rgb(cr, 0.88, 0.88, 0.88);
+    cairo_move_to(cr, left, std::round(py(v)) + 0.5);
+    cairo_line_to(cr, right, std::round(py(v)) + 0.5);
+    cairo_stroke(cr);
+    cairo_set_source_rgb(cr, 0.1, 0.1, 0.1);
+    show_text(cr, left - 0.4 * f - text_width(cr, label), py(v) + 0.35 * f, label);
+  }
+  cairo_save(cr);
+  cairo_move_to(cr, margin + 1.1 * f, 0.5 * (plot_top + axis_y) + 0.5 * text_width(cr, "area fraction"));
+  cairo_rotate(cr, -std::numbers::pi / 2);
+  cairo_show_text(cr, "area fraction");
+  cairo_restore(cr);
+
+  // Bars, coloured as the disks of the bin's middle radius are; a hairline gap when they are wide.
+  for (std::size_t b = 0; b < bins; ++b) {
+    if (!(panel.achieved[b] > 0)) {
+      continue;
+    }
+    double x0 = px(panel.edges[b]);
+    double x1 = px(panel.edges[b + 1]);
+    if (x1 - x0 >= 4) {
+      x0 += 0.5;
+      x1 -= 0.5;
+    }
+    const Rgb c = ColourScale::colour(colours.level(0.5 * (panel.edges[b] + panel.edges[b + 1])));
+    cairo_set_source_rgb(cr, c.r, c.g, c.b);
+    cairo_rectangle(cr, x0, py(panel.achieved[b]), x1 - x0, axis_y - py(panel.achieved[b]));
+    cairo_fill(cr);
+  }
+  // The request, as a step line over the same bins.
+  if (!panel.requested.empty()) {
+    cairo_new_path(cr);
+    cairo_move_to(cr, px(lo), py(0));
+    for (std::size_t b = 0; b < bins; ++b) {
+      cairo_line_to(cr, px(panel.edges[b]), py(panel.requested[b]));
+      cairo_line_to(cr, px(panel.edges[b + 1]), py(panel.requested[b]));
+    }
+    cairo_line_to(cr, px(hi), py(0));
+    cairo_set_source_rgb(cr, 0.8, 0.15, 0.1);
+    cairo_set_line_width(cr, std::max(1.5, w / 600));
+    cairo_set_line_join(cr, CAIRO_LINE_JOIN_MITER);
+    cairo_stroke(cr);
+  }
+
+  // Axes, x ticks (the range's ends and nice values between, without overlapping labels).
+  cairo_set_source_rgb(cr, 0.15, 0.15, 0.15);
+  cairo_set_line_width(cr, 1);
+  cairo_move_to(cr, left, plot_top);
+  cairo_line_to(cr, left, axis_y);
+  cairo_line_to(cr, right, axis_y);
+  cairo_stroke(cr);
+  std::vector<double> ticks{lo};
+  const double xstep = nice_step((hi - lo) / 5);
+  // Counted, not accumulated: a step below the spacing of doubles near lo cannot loop forever.
+  const double first = std::ceil(lo / xstep);
+  for (int k = 0; k <= 10; ++k) {
+    const double t = (first + k) * xstep;
+    if (t > lo && t < hi) {
+      ticks.push_back(t);
+    }
+  }
+  ticks.push_back(hi);
+  const double label_y = axis_y + 0.3 * f + 1.0 * f;
+  const double gap = 0.8 * f;
+  const double hi_left = px(hi) - 0.5 * text_width(cr, hi_label);
+  double last_right = -INFINITY;
+  for (std::size_t k = 0; k < ticks.size(); ++k) {
+    const bool end = k == 0 || k + 1 == ticks.size();
+    const std::string label = format_g(ticks[k]);
+    const double x = px(ticks[k]);
+    const double lw = text_width(cr, label);
+    const double x0 = k == 0 ? std::max(x - 0.5 * lw, margin) : x - 0.5 * lw;
+    if (!end && (x0 < last_right + gap || x0 + lw > hi_left - gap)) {
+      continue;
+    }
+    cairo_move_to(cr, x, axis_y);
+    cairo_line_to(cr, x, axis_y + 0.3 * f);
+    cairo_stroke(cr);
+    show_text(cr, x0, label_y, label);
+    last_right = x0 + lw;
+  }
+  const std::string xlabel = "radius";
+  show_text(cr, 0.5 * (left + right) - 0.5 * text_width(cr, xlabel), label_y + 1.4 * f, xlabel);
+}
+
 }  // namespace
 
 std::optional<Picture> picture_from_name(std::string_view name) {
@@ -228,9 +572,12 @@ std::optional<Picture> picture_from_path(const std::filesystem::path& path) {
   return ext.size() > 1 ? picture_from_name(std::string_view(ext).substr(1)) : std::nullopt;
 }
 
-int picture_height(const frontpack::Domain& domain, int width_px) {
-  const View view = make_view(domain, width_px);
-  return static_cast<int>(std::ceil(domain.bbox().height() * view.scale + 2 * view.margin));
+int histogram_height(int width_px) {
+  return width_px / 4 + 6 * font_px(width_px);
+}
+
+int picture_height(const frontpack::Domain& domain, int width_px, bool histogram) {
+  return packing_height(domain, width_px) + (histogram ? histogram_height(width_px) : 0);
 }
 
 void render(const std::filesystem::path& path, Picture format, const frontpack::Domain& domain,
@@ -239,33 +586,55 @@ void render(const std::filesystem::path& path, Picture format, const frontpack::
   if (width < 16 || width > 16384) {
     throw frontpack::OptionError(std::string("--width ") + std::to_string(width) + ": expected 16 to 16384 pixels");
   }
-  const double height_real = domain.bbox().height() * make_view(domain, width).scale + 2 * kMarginFraction * width;
+  const double panel = options.histogram ? histogram_height(width) : 0;
+  const double height_real =
+      domain.bbox().height() * make_view(domain, width).scale + 2 * kMarginFraction * width + panel;
   if (!(height_real <= 32767)) {
     throw frontpack::OptionError(std::string("--width ") + std::to_string(width) +
                                  ": the picture would be taller than 32767 pixels (the domain is tall "
                                  "and narrow); use a smaller width");
   }
-  const int height = picture_height(domain, width);
+  const int height = picture_height(domain, width, options.histogram);
   View view = make_view(domain, width);
-  view.height = height;
+  view.height = packing_height(domain, width);
+  std::optional<Panel> histogram;
+  std::string caption;
+  if (options.histogram) {
+    histogram = make_panel(disks, options);
+    caption.append("frontpack packing. ").append(histogram->caption[0]);
+    if (!histogram->caption[1].empty()) {
+      caption.append(". ").append(histogram->caption[1]);
+    }
+  }
 
   AtomicFile out(path);
+  Sink sink;
+  sink.file = out.file();
   Surface surface;
   if (format == Picture::png) {
     surface.reset(cairo_image_surface_create(CAIRO_FORMAT_RGB24, width, height));
   } else if (format == Picture::svg) {
-    surface.reset(cairo_svg_surface_create_for_stream(write_to_file, out.file(), width, height));
+    if (!caption.empty()) {
+      sink.insert.append("\n<title>").append(xml_escaped(caption)).append("</title>");
+    }
+    surface.reset(cairo_svg_surface_create_for_stream(write_to_file, &sink, width, height));
   } else {
-    surface.reset(cairo_pdf_surface_create_for_stream(write_to_file, out.file(), width, height));
+    surface.reset(cairo_pdf_surface_create_for_stream(write_to_file, &sink, width, height));
+    if (!caption.empty()) {
+      cairo_pdf_surface_set_metadata(surface.get(), CAIRO_PDF_METADATA_SUBJECT, caption.c_str());
+    }
   }
   check(cairo_surface_status(surface.get()), path);
   {
     const Context cr(cairo_create(surface.get()));
     draw(cr.get(), view, format, domain, disks, width);
+    if (histogram) {
+      draw_panel(cr.get(), *histogram, ColourScale(disks), view.height, width);
+    }
     check(cairo_status(cr.get()), path);
   }
   if (format == Picture::png) {
-    check(cairo_surface_write_to_png_stream(surface.get(), write_to_file, out.file()), path);
+    check(cairo_surface_write_to_png_stream(surface.get(), write_to_file, &sink), path);
   }
   cairo_surface_finish(surface.get());
   check(cairo_surface_status(surface.get()), path);

@@ -5,9 +5,11 @@
 #include <filesystem>
 #include <optional>
 #include <span>
+#include <string>
 
 #include "frontpack/domain.hpp"
 #include "frontpack/geometry.hpp"
+#include "frontpack/sizes.hpp"
 
 namespace frontpack_tool {
 
@@ -20,15 +22,34 @@ enum class Picture { png, svg, pdf };
 
 struct RenderOptions {
   int width_px = 1200;  ///< picture width in pixels (points for SVG/PDF); the height follows the domain
+  /// Draw the size-distribution panel below the packing (false: the bare packing picture).
+  bool histogram = true;
+  /// The requested radius distribution, if known: the panel overlays it and gives the KS distance
+  /// by area (frontpack::measure_sizes).
+  std::optional<frontpack::Radii> requested;
+  /// How the request was written (the --radius spec), for the panel's caption.
+  std::string requested_spec;
 };
 
-/// Height of the picture for a domain and a width (the domain's aspect ratio plus a margin).
-[[nodiscard]] int picture_height(const frontpack::Domain& domain, int width_px);
+/// Height of the size-distribution panel for a picture width: width / 4 + 6 font sizes, the font
+/// size being width / 80 clamped to [10, 18] px; integer arithmetic (tests/tool_tests.cmake
+/// computes the same).
+[[nodiscard]] int histogram_height(int width_px);
+
+/// Height of the picture for a domain and a width: the packing (the domain's aspect ratio plus a
+/// margin), plus histogram_height(width_px) if `histogram`.
+[[nodiscard]] int picture_height(const frontpack::Domain& domain, int width_px, bool histogram = true);
 
 /// Draws the domain (light grey, holes even-odd, dark outline) and the disks (coloured by radius,
 /// viridis: small dark blue, large yellow; thin outlines when they are at least 3 px across) on
-/// white, and writes it to `path` atomically. Throws frontpack::OptionError for a width out of
-/// [16, 16384] or a picture taller than 32767 px, frontpack::IoError if it cannot be written.
+/// white and, unless options.histogram is false, below it the size-distribution panel: a
+/// histogram of the radii by area (each bar the share of the total disk area in a bin of equal
+/// width in radius, coloured as the disks of that radius are: the colour key), the requested
+/// distribution's share of the area per bin as a line, and a caption with the KS distance by area.
+/// Text is drawn with Cairo's toy font API (fontconfig's "sans-serif"; without fonts, boxes).
+/// SVG files get the caption as the root's <title> (Cairo writes text as glyph outlines), PDF
+/// files as their subject. Writes to `path` atomically. Throws frontpack::OptionError for a width
+/// out of [16, 16384] or a picture taller than 32767 px, frontpack::IoError if it cannot be written.
 void render(const std::filesystem::path& path, Picture format, const frontpack::Domain& domain,
             std::span<const frontpack::Disk> disks, const RenderOptions& options = {});
 
