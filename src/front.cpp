@@ -114,7 +114,7 @@ class Front {
       skips = 0;
       const Placement placement = place_on(cur, r);
       if (placement.node == kNone) {
-        cur = advance(placement.retired);  // the radius stays for the next segment
+        cur = first_active_from(advance(placement.retired));  // the radius stays for the next segment
         continue;
       }
       const std::int32_t placed_node = placement.node;
@@ -127,7 +127,7 @@ class Front {
       if constexpr (Open) {
         cur = n == kRight ? kLeft : placed_node;
       } else {
-        cur = list_ ? next_active_after(placed_node) : n;
+        cur = first_active_from(n);
       }
     }
     // The front and the grid are done with: free them before the output grows (peak memory).
@@ -463,14 +463,26 @@ class Front {
     ++active_;
   }
 
-  // Closed form: the segment the sweep visits after placing disk i on c -> n, the first active
-  // one from n on (Fig. 4). Falls back to n, from which the main loop steps to it.
-  [[nodiscard]] std::int32_t next_active_after(std::int32_t i) const noexcept {
-    if (listed(i)) {
-      return anext_[static_cast<std::size_t>(i)];
+  // The first active segment at or after x in front order: the one the sweep visits next (with
+  // the list; without it the main loop steps there). x itself if listed; else the nearest listed
+  // segment either way decides: the first one ahead, or the successor of the first one behind.
+  [[nodiscard]] std::int32_t first_active_from(std::int32_t x) const noexcept {
+    if (!list_ || listed(x)) {
+      return x;
     }
-    const std::int32_t c = prev_[static_cast<std::size_t>(i)];
-    return listed(c) ? anext_[static_cast<std::size_t>(c)] : next_[static_cast<std::size_t>(i)];
+    std::int32_t back = prev_[static_cast<std::size_t>(x)];
+    std::int32_t ahead = next_[static_cast<std::size_t>(x)];
+    for (std::size_t steps = 0; steps <= front_size_; ++steps) {
+      if (listed(ahead)) {
+        return ahead;
+      }
+      if (listed(back)) {
+        return anext_[static_cast<std::size_t>(back)];
+      }
+      ahead = next_[static_cast<std::size_t>(ahead)];
+      back = prev_[static_cast<std::size_t>(back)];
+    }
+    return x;  // nothing is active: the main loop ends
   }
 
   [[nodiscard]] std::int32_t advance(std::int32_t s) const noexcept {
