@@ -429,9 +429,8 @@ class Front {
   }
 
   // Makes segment s's membership of the list agree with its activity. A listed segment keeps its
-  // place (s's position in the front does not change); a new one goes between the nearest listed
-  // segments, found by walking both ways from s at once (one step in practice: a segment becomes
-  // active next to an inside disk, whose other segment is active).
+  // place (s's position in the front does not change); a new one goes next to the nearest listed
+  // segment, before it if it lies ahead, after it if behind.
   void relist(std::int32_t s) {
     const bool active = segment_active(s);
     if (active == listed(s)) {
@@ -441,48 +440,54 @@ class Front {
       list_remove(s);
       return;
     }
-    std::int32_t back = prev_[static_cast<std::size_t>(s)];
-    std::int32_t ahead = next_[static_cast<std::size_t>(s)];
-    for (std::size_t steps = 0; steps <= front_size_; ++steps) {
-      if (back != kNone && back != s) {
-        if (listed(back)) {
-          list_insert_after(back, s);
-          return;
-        }
-        back = prev_[static_cast<std::size_t>(back)];
-      }
-      if (ahead != kNone && ahead != s) {
-        if (listed(ahead)) {
-          list_insert_after(aprev_[static_cast<std::size_t>(ahead)], s);
-          return;
-        }
-        ahead = next_[static_cast<std::size_t>(ahead)];
-      }
+    const Listed near = nearest_listed(s);
+    if (near.node != kNone) {
+      list_insert_after(near.ahead ? aprev_[static_cast<std::size_t>(near.node)] : near.node, s);
+      return;
     }
     anext_[static_cast<std::size_t>(s)] = aprev_[static_cast<std::size_t>(s)] = s;  // the only one
     ++active_;
   }
 
+  // The listed segment nearest to x along the front (x excluded), looking both ways at once, and
+  // whether it lies ahead of x; kNone if there is none. One or two steps in practice: a segment
+  // becomes active, or the sweep lands, next to active segments. (A kNone link, as for a new disk
+  // whose second link is not made yet, ends the walk that way.)
+  struct Listed {
+    std::int32_t node;
+    bool ahead;
+  };
+  [[nodiscard]] Listed nearest_listed(std::int32_t x) const noexcept {
+    std::int32_t back = prev_[static_cast<std::size_t>(x)];
+    std::int32_t ahead = next_[static_cast<std::size_t>(x)];
+    for (std::size_t steps = 0; steps <= front_size_; ++steps) {
+      if (ahead != kNone && ahead != x) {
+        if (listed(ahead)) {
+          return {ahead, true};
+        }
+        ahead = next_[static_cast<std::size_t>(ahead)];
+      }
+      if (back != kNone && back != x) {
+        if (listed(back)) {
+          return {back, false};
+        }
+        back = prev_[static_cast<std::size_t>(back)];
+      }
+    }
+    return {kNone, false};
+  }
+
   // The first active segment at or after x in front order: the one the sweep visits next (with
-  // the list; without it the main loop steps there). x itself if listed; else the nearest listed
-  // segment either way decides: the first one ahead, or the successor of the first one behind.
+  // the list; without it the main loop steps there).
   [[nodiscard]] std::int32_t first_active_from(std::int32_t x) const noexcept {
     if (!list_ || listed(x)) {
       return x;
     }
-    std::int32_t back = prev_[static_cast<std::size_t>(x)];
-    std::int32_t ahead = next_[static_cast<std::size_t>(x)];
-    for (std::size_t steps = 0; steps <= front_size_; ++steps) {
-      if (listed(ahead)) {
-        return ahead;
-      }
-      if (listed(back)) {
-        return anext_[static_cast<std::size_t>(back)];
-      }
-      ahead = next_[static_cast<std::size_t>(ahead)];
-      back = prev_[static_cast<std::size_t>(back)];
+    const Listed near = nearest_listed(x);
+    if (near.node == kNone) {
+      return x;  // nothing is active: the main loop ends
     }
-    return x;  // nothing is active: the main loop ends
+    return near.ahead ? near.node : anext_[static_cast<std::size_t>(near.node)];
   }
 
   [[nodiscard]] std::int32_t advance(std::int32_t s) const noexcept {
