@@ -11,6 +11,7 @@
 #include <numbers>
 #include <string>
 
+#include "boundary.hpp"
 #include "certify.hpp"
 #include "format.hpp"
 #include "front.hpp"
@@ -134,7 +135,18 @@ Packing run_fill(const Domain& domain, const FillOptions& options,
         return progress(Progress{total, std::min(0.99, covered / std::max(to_cover, 1e-300)), covered});
       };
     }
-    const detail::FrontResult result = detail::advance_front(req, rng, raw, packing.stats);
+    detail::FrontResult result;
+    if (options.method == Method::boundary) {
+      detail::BoundaryRequest breq;
+      breq.polygon = &domain.polygons()[p];
+      breq.radii = &radii;
+      breq.clearance = clearance;
+      breq.max_disks = options.max_disks;
+      breq.tick = req.tick;
+      result = detail::advance_boundary(breq, rng, raw, packing.stats);
+    } else {
+      result = detail::advance_front(req, rng, raw, packing.stats);
+    }
     packing.truncated = packing.truncated || result.truncated;
     packing.cancelled = packing.cancelled || result.cancelled;
     for (std::size_t i = part_end.empty() ? 0 : part_end.back(); i < raw.size(); ++i) {

@@ -622,6 +622,7 @@ const char* to_string(Method method) noexcept {
   switch (method) {
     case Method::closed: return "closed";
     case Method::open: return "open";
+    case Method::boundary: return "boundary";
   }
   return "unknown";
 }

@@ -388,8 +388,10 @@ int run_fill(const FillArgs& a) {
     options.method = frontpack::Method::closed;
   } else if (a.method == "open") {
     options.method = frontpack::Method::open;
+  } else if (a.method == "boundary") {
+    options.method = frontpack::Method::boundary;
   } else {
-    throw frontpack::OptionError(std::string("--method ") + a.method + ": expected closed or open");
+    throw frontpack::OptionError(std::string("--method ") + a.method + ": expected closed, open or boundary");
   }
   options.radii = frontpack::parse_radii(a.radius);
   options.seed = a.seed;
@@ -704,7 +706,7 @@ int main(int argc, char** argv) {
   FillArgs fill_args;
   auto* fill = app.add_subcommand("fill", "Fill a domain with disks (advancing front, certified exactly)");
   add_domain_options(*fill, fill_args.src);
-  fill->add_option("--method", fill_args.method, "closed (Sec. 2) or open (Sec. 3)")->capture_default_str();
+  fill->add_option("--method", fill_args.method, "closed (Sec. 2), open (Sec. 3) or boundary (the domain's edges as walls)")->capture_default_str();
   fill->add_option("--radius", fill_args.radius, kRadiusHelp)->capture_default_str();
   fill->add_option("--seed", fill_args.seed, "64-bit seed (same seed, same packing)")->capture_default_str();
   fill->add_option("--max-disks", fill_args.max_disks, "refuse or stop runs beyond this many disks")

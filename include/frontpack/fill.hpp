@@ -39,6 +39,11 @@ class LimitError : public Error {
 enum class Method : std::uint8_t {
   closed,  ///< Sec. 2: grows from three mutually tangent disks at the centre
   open,    ///< Sec. 3: layer by layer from the bottom wall, walls as disks of infinite radius
+  /// Beyond the paper: the domain's own edges are the walls (the open form's walls generalised
+  /// to every edge of every ring, reflex vertices as zero-radius obstacles); the front starts
+  /// along all rings and advances inwards, and voids behind it take later, smaller disks.
+  /// Nothing is culled; the density next to the boundary is that of the interior.
+  boundary,
 };
 
 [[nodiscard]] const char* to_string(Method method) noexcept;
@@ -98,6 +103,7 @@ struct FillStats {
   std::size_t cuts = 0;              ///< cases (b)-(d)
   std::size_t blocked_segments = 0;  ///< segments retired because a disk off the window overlapped
   std::size_t exact_checks = 0;      ///< overlap tests close enough to need the exact predicate
+  std::size_t void_fills = 0;        ///< disks placed in voids left behind the front
   double seconds_front = 0;          ///< wall time of the advancing front (generation)
   double seconds_cull = 0;           ///< wall time of the exact containment pass
   double seconds_overlap = 0;        ///< wall time of the global overlap pass

@@ -1,0 +1,777 @@
+// The boundary-conforming advancing front (boundary.hpp).
+//
+// Elements. A new disk is always placed tangent to two elements: placed disks, walls (the
+// polygon's edges, the open form's infinite-radius disks generalised to segments) and reflex
+// vertices (zero-radius obstacles at the corners where the domain turns away). Element ids: a
+// node (disk or reflex vertex) is >= 0, wall e is -(e + 1).
+//
+// Gaps. The front is kept as its segments alone, without the list that links them: a gap (a, b)
+// says "a disk may touch a and b, on the left of a -> b", the left being the free side (every
+// ring of a normalised polygon has the domain on its left). The initial gaps are the corners of
+// every ring: (e_in, e_out) at a convex corner, (e_in, v) and (v, e_out) at a reflex vertex v. A
+// disk n placed in gap (a, b) replaces it with (a, n) and (n, b), exactly as the paper's front
+// replaces segment a -> b by a -> n -> b. Gaps are taken first in, first out, so the front moves
+// inwards layer by layer from every ring at once, and fronts that meet need no merging: a
+// candidate that overlaps an element d of the other front is moved to touch d and one of its
+// parents instead (the paper's cases (b)-(d), decided by geometry instead of list order), which
+// closes the seam with tangent disks.
+//
+// Voids. A gap where the drawn disk does not fit is not thrown away: it is kept in a bucket by
+// the most it can take (log-spaced radius classes between rmin and rmax): the radius that failed
+// there, or less, the radius of the pocket between its two elements and the element in the way
+// (pocket(): Apollonius' problem for three disks, or two disks and a wall). The cusps behind each
+// new disk (between it, a wall it touches and its other parent; or between two parents that do
+// not touch) are kept the same way. Each new radius is tried first in the voids, those on a wall
+// first (the band along the walls is where a boundary packing is thinnest), in the tightest
+// class whose radii all exceed it, then on the front. Every drawn radius is placed where it fits,
+// so the size distribution is the requested one; the run ends when the front is done and no void
+// can take the radius drawn. A void that fails again moves to a smaller class; one that can take
+// nothing is dropped, so every gap is tried a bounded number of times and the run ends.
+//
+// Order. Gaps on a wall or a reflex vertex are taken before the others, so the first layer along
+// every wall is laid (from every corner) before the interior fronts arrive; without that, fronts
+// grown from holes reach a long wall first and leave it ragged.
+//
+// Containment. A candidate touching a placed disk lies inside the domain when it crosses no wall:
+// the two disks cover the segment between their centres. A candidate touching only walls and
+// vertices is checked directly: its foot on a wall must lie on the edge, and it must not lie in
+// the outside wedge of a reflex vertex. Walls are tested in floating point with half the clearance
+// to spare; the certifier decides containment exactly.
+#include "boundary.hpp"
+
+#include <algorithm>
+#include <array>
+#include <bit>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+
+#include "overlap.hpp"
+
+namespace frontpack::detail {
+
+namespace {
+
+constexpr std::int32_t kNone = std::numeric_limits<std::int32_t>::min();
+constexpr int kClasses = 24;          // void buckets (log-spaced radius classes)
+constexpr int kMoves = 3;             // alternatives tried per front gap (cases (b)-(d))
+constexpr int kVoidMoves = 1;         // and per void
+constexpr std::uint64_t kLowHalf = 0xffffffffULL;
+
+class BoundaryFront {
+  struct Node {
+    double x, y, r;
+    std::int32_t cell_next;
+    std::int32_t pad;
+  };
+  struct Wall {
+    double ax, ay, bx, by;  // a -> b, the domain on the left
+    double tx, ty;          // unit direction
+    double nx, ny;          // unit inward normal
+    double len, w;          // length; n . a
+  };
+  struct Corner {  // a reflex vertex: the directions of its edges in and out
+    double ux1, uy1, ux2, uy2;
+  };
+  struct Gap {
+    std::int32_t a, b;
+  };
+
+ public:
+  BoundaryFront(const BoundaryRequest& req, Rng& rng, std::vector<Disk>& out, FillStats& stats)
+      : req_(req),
+        rng_(rng),
+        out_(out),
+        stats_(stats),
+        budget_(req.max_disks == 0 ? std::numeric_limits<std::size_t>::max() : req.max_disks) {
+    Box box;
+    for (const Point& p : req.polygon->outer) {
+      box.extend(p);
+    }
+    origin_ = Point{box.xmin, box.ymin};
+    width_ = box.xmax - box.xmin;
+    height_ = box.ymax - box.ymin;
+    rmin_ = req.radii->min();
+    rmax_ = req.radii->max();
+    clearance_ = req.clearance;
+    margin_ = clearance_ / 2;
+    band_ = clearance_ / 4;
+    log_rmin_ = std::log(rmin_);
+    const double span = std::log(rmax_) - log_rmin_;
+    class_scale_ = span > 0 ? kClasses / span : 0;
+
+    const double estimate = estimate_disks(box, *req.radii);
+    const auto reserve = static_cast<std::size_t>(std::min(estimate * 1.3 + 64, 1e9));
+    nodes_.reserve(reserve);
+    setup_walls();
+    setup_grid();
+  }
+
+  FrontResult run() {
+    FrontResult result;
+    double r = draw();
+    std::size_t last_tick = 0;
+    for (;;) {
+      if (placed() >= budget_) {
+        result.truncated = true;
+        break;
+      }
+      if (req_.tick && placed() - last_tick >= tick_every_) {
+        last_tick = placed();
+        if (!req_.tick(placed(), area_)) {
+          result.cancelled = true;
+          break;
+        }
+      }
+      const int cls = class_of(r);
+      Gap g{kNone, kNone};
+      // Voids first, those on a wall before the others (the wall band is where small disks are
+      // needed most), the tightest class whose radii all exceed r, the most recent void in it.
+      const std::uint64_t above = ~((2ULL << static_cast<unsigned>(cls)) - 1U) & kLowHalf;
+      const std::uint64_t wall_eligible = mask_ & (above << 32);
+      const std::uint64_t eligible = wall_eligible != 0 ? wall_eligible : (mask_ & above);
+      if (eligible != 0) {
+        const int k = std::countr_zero(eligible);
+        g = voids_[static_cast<std::size_t>(k)].back();
+        voids_[static_cast<std::size_t>(k)].pop_back();
+        if (voids_[static_cast<std::size_t>(k)].empty()) {
+          mask_ &= ~(1ULL << static_cast<unsigned>(k));
+        }
+      } else if (wall_head_ < wall_fifo_.size()) {
+        g = wall_fifo_[wall_head_++];  // the first layer along every wall comes first
+      } else if (!fifo_empty()) {
+        g = fifo_[head_++];
+        if (head_ > 4096 && head_ * 2 > fifo_.size()) {  // drop the consumed half (amortised O(1))
+          fifo_.erase(fifo_.begin(), fifo_.begin() + static_cast<std::ptrdiff_t>(head_));
+          head_ = 0;
+        }
+      } else {
+        // The front is done and no void can take r: the run ends here. (Skipping r and drawing
+        // smaller radii for the voids left would fill them, but only by distorting the size
+        // distribution towards small radii: docs/density.md.)
+        break;
+      }
+      if (try_gap(g, r, eligible != 0)) {
+        area_ += r * r;
+        r = draw();
+      } else if (req_.fill_voids && cls > 0) {
+        // r did not fit: the gap may still take a smaller disk, at most as large as the pocket
+        // between its elements and the disk in the way.
+        int k = cls;
+        push_void(g, k, blocker_);
+      }
+    }
+    for (std::size_t i = corners_.size(); i < nodes_.size(); ++i) {
+      out_.push_back(Disk{{origin_.x + nodes_[i].x, origin_.y + nodes_[i].y}, nodes_[i].r});
+    }
+    return result;
+  }
+
+ private:
+  [[nodiscard]] std::size_t placed() const noexcept { return nodes_.size() - corners_.size() + out_.size(); }
+  [[nodiscard]] bool fifo_empty() const noexcept { return head_ == fifo_.size() && wall_head_ == wall_fifo_.size(); }
+  [[nodiscard]] bool on_wall(std::int32_t e) const noexcept { return is_wall(e) || is_corner(e); }
+  void push_gap(Gap g) {
+    if (on_wall(g.a) || on_wall(g.b)) {
+      wall_fifo_.push_back(g);
+    } else {
+      fifo_.push_back(g);
+    }
+  }
+  [[nodiscard]] static bool is_wall(std::int32_t e) noexcept { return e < 0; }
+  [[nodiscard]] static std::size_t wall_index(std::int32_t e) noexcept { return static_cast<std::size_t>(-(e + 1)); }
+  [[nodiscard]] bool is_corner(std::int32_t e) const noexcept {
+    return e >= 0 && static_cast<std::size_t>(e) < corners_.size();
+  }
+  [[nodiscard]] int class_of(double r) const noexcept {
+    const double c = (std::log(r) - log_rmin_) * class_scale_;
+    if (!(c > 0)) {
+      return 0;
+    }
+    return std::min(static_cast<int>(c), kClasses - 1);
+  }
+  double draw() { return req_.radii->quantile(rng_.uniform()); }
+
+  // ------------------------------------------------------------------------------------------
+  // Walls, reflex vertices and the initial gaps.
+
+  void setup_walls() {
+    auto add_ring = [&](const Ring& ring) {
+      const std::size_t n = ring.size();
+      const auto first = static_cast<std::int32_t>(walls_.size());
+      for (std::size_t i = 0; i < n; ++i) {
+        const Point a = local(ring[i]);
+        const Point b = local(ring[(i + 1) % n]);
+        const double dx = b.x - a.x;
+        const double dy = b.y - a.y;
+        const double len = std::hypot(dx, dy);
+        Wall w{a.x, a.y, b.x, b.y, dx / len, dy / len, -dy / len, dx / len, len, 0};
+        w.w = w.nx * a.x + w.ny * a.y;
+        walls_.push_back(w);
+      }
+      // Corner at vertex i + 1, between wall i (in) and wall i + 1 (out).
+      for (std::size_t i = 0; i < n; ++i) {
+        const std::int32_t in = -(first + static_cast<std::int32_t>(i) + 1);
+        const std::int32_t out = -(first + static_cast<std::int32_t>((i + 1) % n) + 1);
+        const Wall& wi = walls_[wall_index(in)];
+        const Wall& wo = walls_[wall_index(out)];
+        const double turn = wi.tx * wo.ty - wi.ty * wo.tx;  // > 0: left turn, a convex corner
+        if (turn > 1e-12) {
+          push_gap(Gap{in, out});
+        } else {
+          const auto v = static_cast<std::int32_t>(corners_.size());
+          corners_.push_back(Corner{wi.tx, wi.ty, wo.tx, wo.ty});
+          corner_at_.push_back(Point{wi.bx, wi.by});
+          push_gap(Gap{in, v});
+          push_gap(Gap{v, out});
+        }
+      }
+    };
+    add_ring(req_.polygon->outer);
+    for (const Ring& hole : req_.polygon->holes) {
+      add_ring(hole);
+    }
+  }
+
+  [[nodiscard]] Point local(Point p) const noexcept { return {p.x - origin_.x, p.y - origin_.y}; }
+
+  // ------------------------------------------------------------------------------------------
+  // The grid: placed disks and reflex vertices in linked cells; per cell, the walls within reach
+  // of it (a disk of radius <= rmax centred in the cell can only cross those).
+
+  void setup_grid() {
+    cell_ = 2 * rmax_ * (1 + 1e-9);
+    const double pad = 4 * rmax_;
+    gx0_ = -pad;
+    gy0_ = -pad;
+    const double w = width_ + 2 * pad;
+    const double h = height_ + 2 * pad;
+    double side = cell_;
+    while ((w / side + 1) * (h / side + 1) > 16e6) {
+      side *= 2;
+    }
+    cell_ = side;
+    inv_cell_ = 1.0 / cell_;
+    gnx_ = static_cast<std::size_t>(w * inv_cell_) + 1;
+    gny_ = static_cast<std::size_t>(h * inv_cell_) + 1;
+    head_cell_.assign(gnx_ * gny_, kNone);
+
+    for (std::size_t v = 0; v < corners_.size(); ++v) {
+      add_node(corner_at_[v].x, corner_at_[v].y, 0);
+    }
+
+    // Walls per cell (compressed rows): those meeting the cell grown by rmax + the clearance.
+    const double reach = (rmax_ + clearance_) * (1 + 1e-9) + 4 * clearance_;
+    wall_begin_.assign(gnx_ * gny_ + 1, 0);
+    for (int pass = 0; pass < 2; ++pass) {
+      for (std::size_t e = 0; e < walls_.size(); ++e) {
+        const Wall& wl = walls_[e];
+        const std::int64_t c0 = col(std::min(wl.ax, wl.bx) - reach);
+        const std::int64_t c1 = col(std::max(wl.ax, wl.bx) + reach);
+        const std::int64_t r0 = row(std::min(wl.ay, wl.by) - reach);
+        const std::int64_t r1 = row(std::max(wl.ay, wl.by) + reach);
+        for (std::int64_t j = r0; j <= r1; ++j) {
+          for (std::int64_t i = c0; i <= c1; ++i) {
+            const double x0 = gx0_ + static_cast<double>(i) * cell_ - reach;
+            const double y0 = gy0_ + static_cast<double>(j) * cell_ - reach;
+            if (!segment_meets_box(wl, x0, y0, x0 + cell_ + 2 * reach, y0 + cell_ + 2 * reach)) {
+              continue;
+            }
+            const std::size_t c = static_cast<std::size_t>(j) * gnx_ + static_cast<std::size_t>(i);
+            if (pass == 0) {
+              ++wall_begin_[c + 1];
+            } else {
+              wall_ids_[fill_at_[c]++] = -(static_cast<std::int32_t>(e) + 1);
+            }
+          }
+        }
+      }
+      if (pass == 0) {
+        for (std::size_t c = 0; c < gnx_ * gny_; ++c) {
+          wall_begin_[c + 1] += wall_begin_[c];
+        }
+        wall_ids_.assign(wall_begin_.back(), 0);
+        fill_at_.assign(wall_begin_.begin(), wall_begin_.end() - 1);
+      }
+    }
+    std::vector<std::uint32_t>().swap(fill_at_);
+  }
+
+  // Whether segment wl meets the box [x0, x1] x [y0, y1] (Liang-Barsky clipping; conservative
+  // enough: the box is already grown by the reach).
+  static bool segment_meets_box(const Wall& wl, double x0, double y0, double x1, double y1) noexcept {
+    double t0 = 0;
+    double t1 = 1;
+    const double dx = wl.bx - wl.ax;
+    const double dy = wl.by - wl.ay;
+    const std::array<double, 4> p{-dx, dx, -dy, dy};
+    const std::array<double, 4> q{wl.ax - x0, x1 - wl.ax, wl.ay - y0, y1 - wl.ay};
+    for (std::size_t k = 0; k < 4; ++k) {
+      if (p[k] == 0) {
+        if (q[k] < 0) {
+          return false;
+        }
+        continue;
+      }
+      const double t = q[k] / p[k];
+      if (p[k] < 0) {
+        t0 = std::max(t0, t);
+      } else {
+        t1 = std::min(t1, t);
+      }
+      if (t0 > t1) {
+        return false;
+      }
+    }
+    return true;
+  }
+
+  [[nodiscard]] std::int64_t col(double x) const noexcept {
+    const double g = (x - gx0_) * inv_cell_;
+    if (!(g > 0)) {
+      return 0;
+    }
+    return std::min(static_cast<std::int64_t>(g), static_cast<std::int64_t>(gnx_) - 1);
+  }
+  [[nodiscard]] std::int64_t row(double y) const noexcept {
+    const double g = (y - gy0_) * inv_cell_;
+    if (!(g > 0)) {
+      return 0;
+    }
+    return std::min(static_cast<std::int64_t>(g), static_cast<std::int64_t>(gny_) - 1);
+  }
+  [[nodiscard]] std::size_t cell_of(double x, double y) const noexcept {
+    return static_cast<std::size_t>(row(y)) * gnx_ + static_cast<std::size_t>(col(x));
+  }
+
+  std::int32_t add_node(double x, double y, double r) {
+    const auto id = static_cast<std::int32_t>(nodes_.size());
+    const std::size_t c = cell_of(x, y);
+    nodes_.push_back(Node{x, y, r, head_cell_[c], 0});
+    head_cell_[c] = id;
+    return id;
+  }
+
+  // ------------------------------------------------------------------------------------------
+  // Tangent positions: a disk of radius r touching elements a and b (at the clearance), on the
+  // left of a -> b. False if there is none.
+
+  bool tangent(std::int32_t a, std::int32_t b, double r, double& px, double& py) const noexcept {
+    const double g = r + clearance_;
+    if (!is_wall(a) && !is_wall(b)) {
+      const Node& an = nodes_[static_cast<std::size_t>(a)];
+      const Node& bn = nodes_[static_cast<std::size_t>(b)];
+      const double ra = an.r + g;
+      const double rb = bn.r + g;
+      const double dx = bn.x - an.x;
+      const double dy = bn.y - an.y;
+      const double d2 = dx * dx + dy * dy;
+      if (!(d2 > 0)) {
+        return false;
+      }
+      const double inv_d = 1 / std::sqrt(d2);
+      const double t = (ra * ra - rb * rb + d2) * (0.5 * inv_d);
+      const double h2 = ra * ra - t * t;
+      if (!(h2 >= 0)) {
+        return false;
+      }
+      const double h = std::sqrt(h2);
+      const double ux = dx * inv_d;
+      const double uy = dy * inv_d;
+      px = an.x + t * ux - h * uy;
+      py = an.y + t * uy + h * ux;
+      return true;
+    }
+    if (is_wall(a) && is_wall(b)) {
+      // Where the two walls' lines, moved in by g, cross.
+      const Wall& wa = walls_[wall_index(a)];
+      const Wall& wb = walls_[wall_index(b)];
+      const double det = wa.nx * wb.ny - wa.ny * wb.nx;
+      if (!(std::abs(det) > 1e-9)) {
+        return false;  // parallel
+      }
+      const double ca = wa.w + g;
+      const double cb = wb.w + g;
+      px = (ca * wb.ny - cb * wa.ny) / det;
+      py = (wa.nx * cb - wb.nx * ca) / det;
+      return std::isfinite(px) && std::isfinite(py);
+    }
+    // A wall and a node: on the wall's line moved in by g, at distance rn + g from the node;
+    // before the node along the wall if the wall comes first, after it otherwise.
+    const bool wall_first = is_wall(a);
+    const Wall& wl = walls_[wall_index(wall_first ? a : b)];
+    const Node& dn = nodes_[static_cast<std::size_t>(wall_first ? b : a)];
+    const double rd = dn.r + g;
+    const double off = wl.nx * dn.x + wl.ny * dn.y - (wl.w + g);
+    const double s2 = rd * rd - off * off;
+    if (!(s2 >= 0)) {
+      return false;
+    }
+    const double s = wall_first ? -std::sqrt(s2) : std::sqrt(s2);
+    px = dn.x - off * wl.nx + s * wl.tx;
+    py = dn.y - off * wl.ny + s * wl.ty;
+    return true;
+  }
+
+  // ------------------------------------------------------------------------------------------
+  // Overlap tests.
+
+  struct Probe {
+    double x, y, r;
+    double r_hi;  // r + margin + band
+    double r_lo;  // r + margin - band
+  };
+
+  // How far the candidate comes into disk o's keep-out distance r + o.r + margin (> 0: it
+  // overlaps); as front.cpp, floating point outside a narrow band, the exact predicate inside.
+  double depth(const Probe& p, const Node& o) {
+    const double dx = p.x - o.x;
+    const double dy = p.y - o.y;
+    const double d2 = dx * dx + dy * dy;
+    const double hi = p.r_hi + o.r;
+    if (d2 >= hi * hi) {
+      return -1;
+    }
+    const double lo = p.r_lo + o.r;
+    if (lo > 0 && d2 < lo * lo) {
+      return p.r + o.r + margin_ - std::sqrt(d2);
+    }
+    ++stats_.exact_checks;
+    return disks_closer_than_exact({p.x, p.y}, p.r, {o.x, o.y}, o.r, margin_) ? 0x1p-1000 : -1;
+  }
+
+  // Squared distance from (x, y) to wall wl.
+  static double distance2(const Wall& wl, double x, double y) noexcept {
+    const double u = (x - wl.ax) * wl.tx + (y - wl.ay) * wl.ty;
+    double qx = wl.ax;
+    double qy = wl.ay;
+    if (u >= wl.len) {
+      qx = wl.bx;
+      qy = wl.by;
+    } else if (u > 0) {
+      qx += u * wl.tx;
+      qy += u * wl.ty;
+    }
+    const double dx = x - qx;
+    const double dy = y - qy;
+    return dx * dx + dy * dy;
+  }
+
+  // The element the candidate overlaps most deeply (a disk, a reflex vertex or a wall), or kNone.
+  // Elements a and b, the candidate's parents, are skipped among the nodes (it touches them).
+  std::int32_t deepest(const Probe& p, std::int32_t a, std::int32_t b) {
+    std::int32_t best = kNone;
+    double best_depth = 0;
+    const std::size_t home = cell_of(p.x, p.y);
+    const double reach = p.r + margin_;
+    for (std::uint32_t k = wall_begin_[home]; k < wall_begin_[home + 1]; ++k) {
+      const std::int32_t e = wall_ids_[k];
+      const Wall& wl = walls_[wall_index(e)];
+      const double d2 = distance2(wl, p.x, p.y);
+      if (d2 < reach * reach) {
+        const double dd = reach - std::sqrt(d2);
+        if (best == kNone || dd > best_depth) {
+          best = e;
+          best_depth = dd;
+        }
+      }
+    }
+    const double r_reach = (p.r + rmax_) * (1 + 1e-9);
+    const std::int64_t c0 = col(p.x - r_reach);
+    const std::int64_t c1 = col(p.x + r_reach);
+    const std::int64_t r0 = row(p.y - r_reach);
+    const std::int64_t r1 = row(p.y + r_reach);
+    const Node* const nodes = nodes_.data();
+    for (std::int64_t j = r0; j <= r1; ++j) {
+      const std::int32_t* const heads = head_cell_.data() + static_cast<std::size_t>(j) * gnx_;
+      for (std::int64_t i = c0; i <= c1; ++i) {
+        for (std::int32_t d = heads[i]; d != kNone;) {
+          const Node& o = nodes[d];
+          if (d != a && d != b) {
+            const double dd = depth(p, o);
+            if (dd > 0 && (best == kNone || dd > best_depth)) {
+              best = d;
+              best_depth = dd;
+            }
+          }
+          d = o.cell_next;
+        }
+      }
+    }
+    return best;
+  }
+
+  // Whether the candidate really touches parent e where it should: its foot on a wall lies on the
+  // edge, and it is not in the outside wedge of a reflex vertex (there it would be outside the
+  // domain, touching the corner from without).
+  [[nodiscard]] bool supported_by(std::int32_t e, double px, double py) const noexcept {
+    if (is_wall(e)) {
+      const Wall& wl = walls_[wall_index(e)];
+      const double u = (px - wl.ax) * wl.tx + (py - wl.ay) * wl.ty;
+      return u >= -clearance_ && u <= wl.len + clearance_;
+    }
+    if (is_corner(e)) {
+      const Corner& c = corners_[static_cast<std::size_t>(e)];
+      const Node& v = nodes_[static_cast<std::size_t>(e)];
+      const double dx = px - v.x;
+      const double dy = py - v.y;
+      const bool right_of_in = c.ux1 * dy - c.uy1 * dx < 0;
+      const bool right_of_out = c.ux2 * dy - c.uy2 * dx < 0;
+      return !(right_of_in && right_of_out);
+    }
+    return true;
+  }
+
+  // ------------------------------------------------------------------------------------------
+  // The void a failed gap leaves: the radius of the circle touching nodes a, b and d from
+  // outside, on the left of a -> b (Apollonius' problem; a, b, d disks or reflex vertices), or -1
+  // if there is none or it is not computed (a wall among them, centres collinear). A disk touching
+  // a and b no larger than that clears d: it is the most the gap can take with d in the way.
+  [[nodiscard]] double pocket(std::int32_t a, std::int32_t b, std::int32_t d) const noexcept {
+    if (d == kNone) {
+      return -1;
+    }
+    const int walls = (is_wall(a) ? 1 : 0) + (is_wall(b) ? 1 : 0) + (is_wall(d) ? 1 : 0);
+    if (walls == 1) {
+      return pocket_at_wall(a, b, d);
+    }
+    if (walls != 0) {
+      return -1;
+    }
+    const Node& na = nodes_[static_cast<std::size_t>(a)];
+    const Node& nb = nodes_[static_cast<std::size_t>(b)];
+    const Node& nd = nodes_[static_cast<std::size_t>(d)];
+    // Relative to a's centre: |p|^2 = (ra + rho)^2 and, subtracting, c_i . p = alpha_i + beta_i rho.
+    const double bx = nb.x - na.x;
+    const double by = nb.y - na.y;
+    const double dx = nd.x - na.x;
+    const double dy = nd.y - na.y;
+    const double ra = na.r;
+    const double alpha_b = (bx * bx + by * by - nb.r * nb.r + ra * ra) / 2;
+    const double alpha_d = (dx * dx + dy * dy - nd.r * nd.r + ra * ra) / 2;
+    const double beta_b = ra - nb.r;
+    const double beta_d = ra - nd.r;
+    const double det = bx * dy - by * dx;
+    const double scale = (bx * bx + by * by) * (dx * dx + dy * dy);
+    if (!(det * det > 1e-12 * scale)) {
+      return -1;
+    }
+    const double ux = (alpha_b * dy - alpha_d * by) / det;
+    const double uy = (bx * alpha_d - dx * alpha_b) / det;
+    const double vx = (beta_b * dy - beta_d * by) / det;
+    const double vy = (bx * beta_d - dx * beta_b) / det;
+    const double qa = vx * vx + vy * vy - 1;
+    const double qb = 2 * (ux * vx + uy * vy - ra);
+    const double qc = ux * ux + uy * uy - ra * ra;
+    double best = -1;
+    auto consider = [&](double rho) {
+      if (rho > 0 && std::isfinite(rho) && bx * (uy + rho * vy) - by * (ux + rho * vx) > 0 && (best < 0 || rho < best)) {
+        best = rho;
+      }
+    };
+    if (qa == 0) {
+      consider(-qc / qb);
+    } else {
+      const double disc = qb * qb - 4 * qa * qc;
+      if (disc >= 0) {
+        const double sq = std::sqrt(disc);
+        consider((-qb + sq) / (2 * qa));
+        consider((-qb - sq) / (2 * qa));
+      }
+    }
+    return best;
+  }
+
+  // pocket() with one wall among the three: the circle of radius rho at distance rho from the
+  // wall's line (inside) touching the two nodes from outside; the smallest such rho.
+  [[nodiscard]] double pocket_at_wall(std::int32_t a, std::int32_t b, std::int32_t d) const noexcept {
+    std::int32_t w = a;
+    std::int32_t i = b;
+    std::int32_t j = d;
+    if (is_wall(b)) {
+      w = b;
+      i = a;
+    } else if (is_wall(d)) {
+      w = d;
+      i = a;
+      j = b;
+    }
+    const Wall& wl = walls_[wall_index(w)];
+    const Node& ni = nodes_[static_cast<std::size_t>(i)];
+    const Node& nj = nodes_[static_cast<std::size_t>(j)];
+    // Relative to i's centre: |p|^2 = (ri + rho)^2; c . p = alpha + beta rho (c = cj - ci);
+    // n . p = (w - n . ci) + rho.
+    const double cx = nj.x - ni.x;
+    const double cy = nj.y - ni.y;
+    const double ri = ni.r;
+    const double alpha = (cx * cx + cy * cy - nj.r * nj.r + ri * ri) / 2;
+    const double beta = ri - nj.r;
+    const double off = wl.w - (wl.nx * ni.x + wl.ny * ni.y);
+    const double det = cx * wl.ny - cy * wl.nx;
+    if (!(det * det > 1e-12 * (cx * cx + cy * cy))) {
+      return -1;
+    }
+    const double ux = (alpha * wl.ny - off * cy) / det;
+    const double uy = (cx * off - wl.nx * alpha) / det;
+    const double vx = (beta * wl.ny - 1 * cy) / det;
+    const double vy = (cx * 1 - wl.nx * beta) / det;
+    return smallest_root(ux, uy, vx, vy, ri);
+  }
+
+  // The smallest rho > 0 with |u + rho v| = ri + rho, or -1.
+  static double smallest_root(double ux, double uy, double vx, double vy, double ri) noexcept {
+    const double qa = vx * vx + vy * vy - 1;
+    const double qb = 2 * (ux * vx + uy * vy - ri);
+    const double qc = ux * ux + uy * uy - ri * ri;
+    double best = -1;
+    auto consider = [&](double rho) {
+      if (rho > 0 && std::isfinite(rho) && (best < 0 || rho < best)) {
+        best = rho;
+      }
+    };
+    if (qa == 0) {
+      consider(-qc / qb);
+    } else {
+      const double disc = qb * qb - 4 * qa * qc;
+      if (disc >= 0) {
+        const double sq = std::sqrt(disc);
+        consider((-qb + sq) / (2 * qa));
+        consider((-qb - sq) / (2 * qa));
+      }
+    }
+    return best;
+  }
+
+  // Keeps gap g as a void for radii below class k, and below the pocket left by `blocker`.
+  void push_void(Gap g, int k, std::int32_t blocker) {
+    if (blocker != kNone) {
+      const double cap = pocket(g.a, g.b, blocker);
+      if (cap >= 0) {
+        k = cap < rmin_ ? 0 : std::min(k, class_of(cap));
+      }
+    }
+    if (k > 0) {
+      if (is_wall(g.a) || is_wall(g.b)) {
+        k += 32;  // wall voids: buckets 32.., tried first
+      }
+      voids_[static_cast<std::size_t>(k)].push_back(g);
+      mask_ |= 1ULL << static_cast<unsigned>(k);
+    }
+  }
+
+  // ------------------------------------------------------------------------------------------
+  // Placing a disk of radius r in gap g.
+
+  bool try_gap(Gap g, double r, bool in_void) {
+    std::int32_t x = g.a;
+    std::int32_t y = g.b;
+    double px = 0;
+    double py = 0;
+    ++stats_.attempts;
+    blocker_ = kNone;
+    if (!tangent(x, y, r, px, py)) {
+      return false;
+    }
+    const int moves = in_void ? kVoidMoves : kMoves;
+    for (int move = 0; move <= moves; ++move) {
+      if (!(px - r >= -clearance_ && px + r <= width_ + clearance_ && py - r >= -clearance_ &&
+            py + r <= height_ + clearance_)) {
+        return false;  // outside the polygon's box, so outside the polygon
+      }
+      const Probe p{px, py, r, r + margin_ + band_, r + margin_ - band_};
+      const std::int32_t d = deepest(p, x, y);
+      if (d == kNone) {
+        if (!supported_by(x, px, py) || !supported_by(y, px, py)) {
+          return false;
+        }
+        const std::int32_t n = add_node(px, py, r);
+        push_gap(Gap{x, n});
+        push_gap(Gap{n, y});
+        if (req_.fill_voids) {
+          // The voids behind the new disk: the cusp between it, a wall parent and the other
+          // parent, or the pocket between two disk parents that do not touch.
+          if (is_wall(x) && !is_wall(y)) {
+            push_void(Gap{n, x}, kClasses - 1, y);
+          } else if (is_wall(y) && !is_wall(x)) {
+            push_void(Gap{y, n}, kClasses - 1, x);
+          } else if (!is_wall(x) && !is_wall(y)) {
+            push_void(Gap{y, x}, kClasses - 1, n);
+          }
+        }
+        stats_.void_fills += in_void ? 1U : 0U;
+        return true;
+      }
+      if (move == 0) {
+        blocker_ = d;
+      }
+      if (move == moves || d == x || d == y) {
+        return false;
+      }
+      // Cases (b)-(d) by geometry: touch d and one of the parents instead, whichever of the
+      // two positions is nearer the first.
+      ++stats_.cuts;
+      double ax = 0;
+      double ay = 0;
+      double bx = 0;
+      double by = 0;
+      const bool ok_a = tangent(x, d, r, ax, ay);
+      const bool ok_b = tangent(d, y, r, bx, by);
+      ++stats_.attempts;
+      if (!ok_a && !ok_b) {
+        return false;
+      }
+      const double da = ok_a ? (ax - px) * (ax - px) + (ay - py) * (ay - py) : INFINITY;
+      const double db = ok_b ? (bx - px) * (bx - px) + (by - py) * (by - py) : INFINITY;
+      if (da <= db) {
+        y = d;
+        px = ax;
+        py = ay;
+      } else {
+        x = d;
+        px = bx;
+        py = by;
+      }
+    }
+    return false;
+  }
+
+  const BoundaryRequest& req_;
+  Rng& rng_;
+  std::vector<Disk>& out_;
+  FillStats& stats_;
+  std::size_t budget_;
+  std::size_t tick_every_ = 1 << 14;
+  Point origin_;
+  double width_ = 0, height_ = 0;
+  double rmin_ = 0, rmax_ = 0, clearance_ = 0, margin_ = 0, band_ = 0;
+  double log_rmin_ = 0, class_scale_ = 0;
+  double area_ = 0;
+  std::int32_t blocker_ = kNone;  // the deepest overlap at a failed gap's first position
+
+  std::vector<Wall> walls_;
+  std::vector<Corner> corners_;  // node i < corners_.size() is reflex vertex i (radius 0)
+  std::vector<Point> corner_at_;
+  std::vector<Node> nodes_;
+
+  std::vector<Gap> fifo_;
+  std::vector<Gap> wall_fifo_;  // gaps on a wall or a reflex vertex (grows with the perimeter only)
+  std::size_t wall_head_ = 0;
+  std::size_t head_ = 0;
+  std::array<std::vector<Gap>, 64> voids_;  // [k]: class k; [32 + k]: class k, on a wall
+  std::uint64_t mask_ = 0;  // bit k: voids_[k] is not empty
+
+  double cell_ = 1, inv_cell_ = 1, gx0_ = 0, gy0_ = 0;
+  std::size_t gnx_ = 1, gny_ = 1;
+  std::vector<std::int32_t> head_cell_;
+  std::vector<std::uint32_t> wall_begin_, fill_at_;
+  std::vector<std::int32_t> wall_ids_;
+};
+
+}  // namespace
+
+FrontResult advance_boundary(const BoundaryRequest& req, Rng& rng, std::vector<Disk>& out, FillStats& stats) {
+  BoundaryFront front(req, rng, out, stats);
+  return front.run();
+}
+
+}  // namespace frontpack::detail
