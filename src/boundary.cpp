@@ -45,6 +45,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <numbers>
 
 #include "overlap.hpp"
 
@@ -105,6 +106,9 @@ class BoundaryFront {
     nodes_.reserve(reserve);
     setup_walls();
     setup_grid();
+    for (const Wall& w : walls_) {
+      polygon_area_ += (w.ax * w.by - w.bx * w.ay) / 2;  // holes (clockwise) subtract
+    }
   }
 
   FrontResult run() {
@@ -146,9 +150,16 @@ class BoundaryFront {
           head_ = 0;
         }
       } else {
-        // The front is done and no void can take r: the run ends here. (Skipping r and drawing
-        // smaller radii for the voids left would fill them, but only by distorting the size
-        // distribution towards small radii: docs/density.md.)
+        // The front is done and no void can take r. If the walls could not start a front (a
+        // boundary rougher than the smallest disk: nothing fits in its corners) and the polygon
+        // is far from full, a seed pair of disks starts one inside, growing outwards. Otherwise
+        // the run ends here. (Skipping r and drawing smaller radii for the voids left would fill
+        // them, but only by distorting the size distribution towards small radii.)
+        if (seed(r)) {
+          area_ += r * r;
+          r = draw();
+          continue;
+        }
         break;
       }
       if (try_gap(g, r, eligible != 0)) {
@@ -660,6 +671,61 @@ class BoundaryFront {
   }
 
   // ------------------------------------------------------------------------------------------
+  // Seeds: two touching disks (r and a second drawn radius) at a point inside the polygon where
+  // they fit, with the gaps on both sides of the pair. Tried only while the disks cover less than
+  // half of what a dense packing would, at most kSeeds times, each at up to kSeedTries points
+  // drawn in the polygon's box. Returns whether the pair was placed.
+  static constexpr int kSeeds = 16;
+  static constexpr int kSeedTries = 256;
+
+  bool seed(double r) {
+    if (seeds_ >= kSeeds || std::numbers::pi * area_ >= 0.5 * 0.82 * polygon_area_) {
+      return false;
+    }
+    ++seeds_;
+    const double r2 = draw();
+    for (int t = 0; t < kSeedTries; ++t) {
+      const double sx = width_ * rng_.uniform();
+      const double sy = height_ * rng_.uniform();
+      const double tx = sx + r + r2 + clearance_;
+      if (!inside_polygon(sx, sy) || !fits(sx, sy, r) || !fits(tx, sy, r2)) {
+        continue;
+      }
+      const std::int32_t a = add_node(sx, sy, r);
+      if (deepest(Probe{tx, sy, r2, r2 + margin_ + band_, r2 + margin_ - band_}, a, kNone) != kNone) {
+        continue;  // cannot happen (they are apart by the clearance); kept for safety
+      }
+      const std::int32_t b = add_node(tx, sy, r2);
+      area_ += r2 * r2;
+      push_gap(Gap{a, b});
+      push_gap(Gap{b, a});
+      return true;
+    }
+    return false;
+  }
+
+  // Whether a disk at (x, y) of radius r crosses no wall and overlaps no disk (with its centre
+  // inside the polygon, it then lies inside).
+  bool fits(double x, double y, double r) {
+    if (!(x - r >= 0 && x + r <= width_ && y - r >= 0 && y + r <= height_)) {
+      return false;
+    }
+    return deepest(Probe{x, y, r, r + margin_ + band_, r + margin_ - band_}, kNone, kNone) == kNone;
+  }
+
+  // Crossing number over all walls (floating point; a seed centre is far from every wall).
+  [[nodiscard]] bool inside_polygon(double x, double y) const noexcept {
+    bool in = false;
+    for (const Wall& w : walls_) {
+      if ((w.ay > y) != (w.by > y)) {
+        const double xc = w.ax + (y - w.ay) * (w.bx - w.ax) / (w.by - w.ay);
+        in = in != (x < xc);
+      }
+    }
+    return in;
+  }
+
+  // ------------------------------------------------------------------------------------------
   // Placing a disk of radius r in gap g.
 
   bool try_gap(Gap g, double r, bool in_void) {
@@ -746,6 +812,8 @@ class BoundaryFront {
   double rmin_ = 0, rmax_ = 0, clearance_ = 0, margin_ = 0, band_ = 0;
   double log_rmin_ = 0, class_scale_ = 0;
   double area_ = 0;
+  double polygon_area_ = 0;  // shoelace, for the seeding rule
+  int seeds_ = 0;
   std::int32_t blocker_ = kNone;  // the deepest overlap at a failed gap's first position
 
   std::vector<Wall> walls_;

@@ -127,6 +127,7 @@ Packing run_fill(const Domain& domain, const FillOptions& options,
     }
     req.clearance = clearance;
     req.max_disks = options.max_disks;
+    req.fill_voids = options.fill_voids;
     if (progress) {
       // The fraction of the area to cover that is covered: a random dense packing covers about
       // 0.85 of each box (the estimate's density), so this reaches about 1 at the end.
@@ -142,6 +143,7 @@ Packing run_fill(const Domain& domain, const FillOptions& options,
       breq.radii = &radii;
       breq.clearance = clearance;
       breq.max_disks = options.max_disks;
+      breq.fill_voids = options.fill_voids;
       breq.tick = req.tick;
       result = detail::advance_boundary(breq, rng, raw, packing.stats);
     } else {

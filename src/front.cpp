@@ -16,6 +16,8 @@
 #include "front.hpp"
 
 #include <algorithm>
+#include <array>
+#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -38,6 +40,7 @@ constexpr std::int32_t kBottom = 1;  // Bb
 constexpr std::int32_t kRight = 2;   // Br
 constexpr std::int32_t kFirstDisk = 3;
 constexpr double kListAspect = 4;  // see Front::link
+constexpr int kVoidClasses = 16;    // void buckets (log-spaced radius classes), see Front::cut
 
 template <bool Open>
 class Front {
@@ -68,6 +71,10 @@ class Front {
     const double long_side = std::max(box_.width(), box_.height());
     const double short_side = std::min(box_.width(), box_.height());
     list_ = !Open && !(long_side <= kListAspect * short_side);  // NaN-safe: a degenerate box lists
+    fill_voids_ = req.fill_voids;
+    log_rmin_ = std::log(req.radii->min());
+    const double span = std::log(rmax_) - log_rmin_;
+    class_scale_ = span > 0 ? kVoidClasses / span : 0;
 
     const double estimate = estimate_disks(box_, *req.radii);
     const auto reserve = static_cast<std::size_t>(std::min(estimate * 1.3 + 64, 1e9));
@@ -112,6 +119,11 @@ class Front {
         continue;
       }
       skips = 0;
+      if (vmask_ != 0 && try_voids(r)) {
+        area_ += r * r;
+        r = draw();
+        continue;
+      }
       const Placement placement = place_on(cur, r);
       if (placement.node == kNone) {
         cur = first_active_from(advance(placement.retired));  // the radius stays for the next segment
@@ -136,6 +148,9 @@ class Front {
     release(anext_);
     release(aprev_);
     release(head_);
+    for (auto& v : voids_) {
+      release(v);
+    }
     for (std::size_t i = kFirstDisk; i < nodes_.size(); ++i) {
       out_.push_back(Disk{{origin_.x + nodes_[i].x, origin_.y + nodes_[i].y}, nodes_[i].r});
     }
@@ -502,6 +517,16 @@ class Front {
     if (!list_) {
       unlink_segment(before);  // the list keeps `before` in place: link() relists it
     }
+    if (fill_voids_) {
+      // The segments cut off enclose a void between the disks removed from the front and the
+      // disk about to be placed; later, smaller disks may fit there (Sec. 2.4.4's hole filling,
+      // but with other disks than the one that cut).
+      keep_void(before, kVoidClasses - 1);
+      for (std::int32_t v = first; v != last; v = next_[static_cast<std::size_t>(v)]) {
+        keep_void(v, kVoidClasses - 1);
+      }
+      keep_void(last, kVoidClasses - 1);
+    }
     for (std::int32_t v = first;; v = next_[static_cast<std::size_t>(v)]) {
       unlink_segment(v);
       --front_size_;
@@ -640,6 +665,60 @@ class Front {
   }
 
   // ------------------------------------------------------------------------------------------
+  // Void filling. The segments that a cut removes from the front are kept as voids, in buckets by
+  // the most they can take (log-spaced radius classes). Each new radius is tried first in the
+  // tightest bucket whose radii all exceed it (the most recent void there): tangent to the void
+  // segment's two disks on its free side, accepted if it overlaps nothing (the grid). A void
+  // that fails moves to the class of the radius that failed; one in the lowest class is dropped.
+  // Every drawn radius is placed (here or on the front), so the size distribution is unchanged.
+
+  [[nodiscard]] int void_class(double r) const noexcept {
+    const double c = (std::log(r) - log_rmin_) * class_scale_;
+    if (!(c > 0)) {
+      return 0;
+    }
+    return std::min(static_cast<int>(c), kVoidClasses - 1);
+  }
+
+  // Keeps segment s -> next_[s] as a void of class k.
+  void keep_void(std::int32_t s, int k) {
+    const std::int32_t t = next_[static_cast<std::size_t>(s)];
+    if (k <= 0 || t == kNone || (Open && s == kRight)) {
+      return;
+    }
+    voids_[static_cast<std::size_t>(k)].push_back(VoidSeg{s, t});
+    vmask_ |= 1U << static_cast<unsigned>(k);
+  }
+
+  // Tries r in the voids; true if it was placed.
+  bool try_voids(double r) {
+    const int cls = void_class(r);
+    const std::uint32_t eligible = vmask_ & ~((2U << static_cast<unsigned>(cls)) - 1U);
+    if (eligible == 0) {
+      return false;
+    }
+    const auto k = static_cast<std::size_t>(std::countr_zero(eligible));
+    const VoidSeg v = voids_[k].back();
+    voids_[k].pop_back();
+    if (voids_[k].empty()) {
+      vmask_ &= ~(1U << static_cast<unsigned>(k));
+    }
+    ++stats_.attempts;
+    double px = 0;
+    double py = 0;
+    if (tangent(v.a, v.b, r, px, py) && !overlaps_anything(probe(px, py, r), v.a, v.b)) {
+      add_node(px, py, r);  // off the front: it only fills
+      ++stats_.void_fills;
+      return true;
+    }
+    if (cls > 0) {
+      voids_[static_cast<std::size_t>(cls)].push_back(v);
+      vmask_ |= 1U << static_cast<unsigned>(cls);
+    }
+    return false;
+  }
+
+  // ------------------------------------------------------------------------------------------
   // Initial fronts.
 
   // Sec. 2.1: three mutually tangent disks D1, D2, D3, anticlockwise, at the start point; the
@@ -709,6 +788,14 @@ class Front {
   double cell_ = 1, inv_cell_ = 1, gx0_ = 0, gy0_ = 0;
   std::size_t gnx_ = 1, gny_ = 1;
   std::vector<std::int32_t> head_;
+
+  struct VoidSeg {
+    std::int32_t a, b;
+  };
+  bool fill_voids_ = true;
+  double log_rmin_ = 0, class_scale_ = 0;
+  std::array<std::vector<VoidSeg>, kVoidClasses> voids_;
+  std::uint32_t vmask_ = 0;  // bit k: voids_[k] is not empty
 };
 
 }  // namespace

@@ -65,6 +65,11 @@ struct FillOptions {
   /// unit domain. A value you give must be at least 16 * 2^-52 * (largest |coordinate| + 5 rmax)
   /// (else OptionError); give the same value to make two runs comparable (e.g. translated domains).
   double clearance = 0;
+  /// Void filling (all methods): the voids the front leaves behind (the segments its cases
+  /// (b)-(d) cut off; for the boundary method also the cusps behind each disk) are kept, and each
+  /// new disk is tried there first, before the front. Every drawn radius is still placed, so the
+  /// size distribution is unchanged. false gives the paper's forms as published.
+  bool fill_voids = true;
   /// Refuse requests whose estimated disk count exceeds this (LimitError), and stop a run that
   /// reaches it (Packing::truncated).
   std::size_t max_disks = 50'000'000;
