@@ -1,11 +1,13 @@
 // Fill benchmarks (issue #3): radii uniform in [5e-4, 5e-3] in a 6 x 6 square (~1M disks),
 // one thread. Run each alone so that the peak-memory counter means something:
 //   build/release/bench/frontpack_bench_fill --benchmark_filter=Core
-//   build/release/bench/frontpack_bench_fill --benchmark_filter=Pipeline/1
+//   build/release/bench/frontpack_bench_fill --benchmark_filter=Pipeline/1/
 //   build/release/bench/frontpack_bench_fill --benchmark_filter=Pipeline/10/
 //   build/release/bench/frontpack_bench_fill --benchmark_filter=Pipeline/100/   (100M disks, 5.4 GB)
 // "Core" times the advancing front alone (FillStats::seconds_front, manual time); "Pipeline"
-// times fill() end to end: generation + exact cull + CGAL overlap pass.
+// times fill() end to end: generation + exact cull + CGAL overlap pass. The last argument is
+// FillOptions::fill_voids: issue #3's figures are the paper's forms (0); issue #5's compare the
+// boundary method with them (Core/2/1 against Core/0/0).
 #include <benchmark/benchmark.h>
 #include <sys/resource.h>
 
@@ -26,9 +28,10 @@ fp::Domain square(double scale) {
   return fp::Domain::from_wkt("POLYGON((0 0," + side + " 0," + side + " " + side + ",0 " + side + ",0 0))");
 }
 
-fp::FillOptions options(fp::Method m) {
+fp::FillOptions options(fp::Method m, bool voids) {
   fp::FillOptions o;
   o.method = m;
+  o.fill_voids = voids;
   o.radii = fp::Radii::uniform(5e-4, 5e-3);
   o.seed = 2003;
   o.max_disks = 200'000'000;  // the 100M-disk run
@@ -61,15 +64,18 @@ void BM_Core(benchmark::State& state) {
   const fp::Domain d = square(1);
   fp::Packing p;
   for (auto _ : state) {
-    p = fp::fill(d, options(method));
+    p = fp::fill(d, options(method, state.range(1) != 0));
     state.SetIterationTime(p.stats.seconds_front);
   }
   report(state, p, d);
-  state.SetLabel(fp::to_string(method));
+  state.SetLabel(std::string(fp::to_string(method)) + (state.range(1) != 0 ? ", voids" : ""));
 }
 BENCHMARK(BM_Core)
-    ->Arg(static_cast<int>(fp::Method::open))
-    ->Arg(static_cast<int>(fp::Method::closed))
+    ->Args({static_cast<int>(fp::Method::open), 0})
+    ->Args({static_cast<int>(fp::Method::closed), 0})
+    ->Args({static_cast<int>(fp::Method::open), 1})
+    ->Args({static_cast<int>(fp::Method::closed), 1})
+    ->Args({static_cast<int>(fp::Method::boundary), 1})
     ->UseManualTime()
     ->Unit(benchmark::kMillisecond)
     ->Iterations(3);
@@ -79,16 +85,17 @@ void BM_Pipeline(benchmark::State& state) {
   const auto method = static_cast<fp::Method>(state.range(1));
   fp::Packing p;
   for (auto _ : state) {
-    p = fp::fill(d, options(method));
+    p = fp::fill(d, options(method, state.range(2) != 0));
   }
   report(state, p, d);
-  state.SetLabel(fp::to_string(method));
+  state.SetLabel(std::string(fp::to_string(method)) + (state.range(2) != 0 ? ", voids" : ""));
 }
 BENCHMARK(BM_Pipeline)
-    ->Args({1, static_cast<int>(fp::Method::open)})
-    ->Args({1, static_cast<int>(fp::Method::closed)})
-    ->Args({10, static_cast<int>(fp::Method::open)})
-    ->Args({100, static_cast<int>(fp::Method::open)})  // ~100M disks, ~5.4 GB, ~100 s: run alone
+    ->Args({1, static_cast<int>(fp::Method::open), 0})
+    ->Args({1, static_cast<int>(fp::Method::closed), 0})
+    ->Args({1, static_cast<int>(fp::Method::boundary), 1})
+    ->Args({10, static_cast<int>(fp::Method::open), 0})
+    ->Args({100, static_cast<int>(fp::Method::open), 0})  // ~100M disks, ~5.4 GB, ~100 s: run alone
     ->Unit(benchmark::kMillisecond)
     ->Iterations(1);
 

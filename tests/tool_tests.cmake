@@ -24,10 +24,12 @@ frontpack_tool_test(invalid_bowtie 4 "invalid domain: polygon 0, outer ring: edg
 frontpack_tool_test(fill_csv_svg 0 "disks: +[0-9]+ .*certificate: certified: [0-9]+ generated, [0-9]+ culled .*, 0 dropped"
   fill ${S}/l_shape.wkt --radius uniform:0.02,0.08 --seed 3 -o ${CMAKE_CURRENT_BINARY_DIR}/l.csv -o ${CMAKE_CURRENT_BINARY_DIR}/l.svg)
 frontpack_tool_test(fill_open 0 "open form" fill ${S}/annulus.wkt --method open --radius constant:0.05)
+frontpack_tool_test(fill_boundary 0 "boundary form.*certified: [0-9]+ generated, 0 culled .*, 0 dropped"
+  fill ${S}/plate_with_holes.wkt --method boundary --radius uniform:0.01,0.1 --seed 2)
 frontpack_tool_test(fill_bad_radius 5 "rmin \\(0.2\\) must not exceed rmax \\(0.1\\)" fill ${S}/l_shape.wkt --radius uniform:0.2,0.1)
 frontpack_tool_test(fill_bad_radius_syntax 5 "expected uniform:RMIN,RMAX or constant:R" fill ${S}/l_shape.wkt --radius gauss:1)
 frontpack_tool_test(fill_nan_radius 5 "must be a finite number > 0" fill ${S}/l_shape.wkt --radius constant:nan)
-frontpack_tool_test(fill_bad_method 5 "--method diagonal: expected closed or open" fill ${S}/l_shape.wkt --method diagonal)
+frontpack_tool_test(fill_bad_method 5 "--method diagonal: expected closed, open or boundary" fill ${S}/l_shape.wkt --method diagonal)
 frontpack_tool_test(fill_bad_format 5 "unknown format '.xyz'" fill ${S}/l_shape.wkt -o out.xyz)
 frontpack_tool_test(fill_unwritable 2 "cannot write '/nonexistent/dir/p.csv': No such file or directory" fill ${S}/l_shape.wkt -o /nonexistent/dir/p.csv)
 frontpack_tool_test(fill_too_many 5 "would generate about [0-9]+ disks, more than max_disks" fill ${S}/unit_square.wkt --radius constant:1e-5)
@@ -80,9 +82,9 @@ frontpack_tool_check(fill_all_formats 0
   "fraction: +0\\.[0-9]+ overall, 0\\.[0-9]+ interior.*radii: +min .*wrote: .*p\\.data \\(lammps\\).*p\\.png \\(png\\)"
   FILES ${O}/p.csv ${O}/p.txt ${O}/p.data ${O}/p.vtp ${O}/p.svg ${O}/p.pdf ${O}/p.png ${O}/s.json
   PNG ${O}/p.png 401 ${plate_401_height}
-  JSON ${O}/s.json "command=^fill$" "method=^closed$" "seed=^7$" "disks=^[1-9][0-9]+$"
+  JSON ${O}/s.json "command=^fill$" "method=^boundary$" "seed=^7$" "disks=^[1-9][0-9]+$"
        "packing_fraction=^0\\.[6-9]" "interior_fraction=^0\\.[6-9]" "radius/min=^0\\.0" "radius/mean=^0\\.0"
-       "certificate/certified=^ON$" "certificate/dropped=^0$" "certificate/exact=^ON$" "domain/holes=^7$"
+       "certificate/certified=^ON$" "certificate/culled=^0$" "certificate/dropped=^0$" "certificate/exact=^ON$" "domain/holes=^7$"
        "seconds/total=^[0-9]" "outputs/6/format=^png$"
   ARGS fill ${S}/plate_with_holes.wkt --radius uniform:0.01,0.04 --seed 7 --width 401 -o ${O}/p.csv -o ${O}/p.txt
        -o ${O}/p.data -o ${O}/p.vtp -o ${O}/p.svg -o ${O}/p.pdf -o ${O}/p.png --json ${O}/s.json)

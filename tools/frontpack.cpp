@@ -368,7 +368,7 @@ int run_info(const DomainSource& src) {
 
 struct FillArgs {
   DomainSource src;
-  std::string method = "closed";
+  std::string method = "boundary";
   std::string radius = "uniform:0.01,0.05";
   std::uint64_t seed = 0;
   std::size_t max_disks = frontpack::FillOptions{}.max_disks;

@@ -1,0 +1,250 @@
+#!/usr/bin/env python3
+"""Packing fraction next to the boundary against the interior, per shape and method (issue #5).
+
+Runs the frontpack tool on every shape in shapes/ that has a hole or a reflex corner, with the
+methods closed, open and boundary and seeds 1, 2, 3, and writes a markdown table of the means over
+the seeds: disks, packing fraction overall, in the interior (farther than 2 rmax from the
+boundary) and in the band (within 2 rmax), band - interior, the KS distance by area from the
+requested radius distribution, culled disks and the advancing front's time per disk.
+
+Radii: uniform:R,10R (rmax/rmin = 10) with R chosen per shape for about --disks disks (40,000 by
+default), from the shape's area as `frontpack info` prints it; the spec used is in the table.
+
+    python3 tools/density_table.py                       # the table on stdout
+    python3 tools/density_table.py --out table.md        # ... into a file
+    python3 tools/density_table.py --pictures            # docs/img/density-{closed,open,boundary}.png
+
+Python 3 standard library only. docs/density.md explains the measures and reads the table.
+"""
+
+import argparse
+import json
+import math
+import os
+import re
+import subprocess
+import sys
+import tempfile
+import time
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+METHODS = ("closed", "open", "boundary")
+SEEDS = (1, 2, 3)
+RATIO = 10  # rmax / rmin
+# The pictures: one concave domain with holes, a few thousand disks so that they are visible.
+# The gear rather than the plate: its teeth are narrow (a few rmax), so the sparse band of the
+# closed and open forms is plain to see. 540 px keeps each PNG under 300 KB (about 2,000 disks).
+PICTURE_SHAPE = "gear.wkt"
+PICTURE_RADIUS = "uniform:0.0028,0.028"
+PICTURE_SEED = 1
+PICTURE_WIDTH = 540
+
+
+# --- which shapes: a hole or a reflex corner --------------------------------------------------
+
+def parse_wkt_polygons(text):
+    """The polygons of a POLYGON or MULTIPOLYGON as lists of rings (lists of (x, y))."""
+    tokens = re.findall(r"\(|\)|,|[^\s(),]+", text)
+    pos = 0
+
+    def parse(depth_left):
+        nonlocal pos
+        assert tokens[pos] == "("
+        pos += 1
+        items = []
+        if depth_left == 0:  # a ring: "x y, x y, ..."
+            point = []
+            while tokens[pos] != ")":
+                if tokens[pos] == ",":
+                    items.append(tuple(point))
+                    point = []
+                else:
+                    point.append(float(tokens[pos]))
+                pos += 1
+            items.append(tuple(point))
+        else:
+            while True:
+                items.append(parse(depth_left - 1))
+                if tokens[pos] == ",":
+                    pos += 1
+                    continue
+                break
+        assert tokens[pos] == ")"
+        pos += 1
+        return items
+
+    kind = tokens[0].upper()
+    pos = 1
+    while tokens[pos] != "(":  # e.g. "EMPTY" is not expected; skip modifiers
+        pos += 1
+    if kind == "POLYGON":
+        return [parse(1)]
+    if kind == "MULTIPOLYGON":
+        return parse(2)
+    raise ValueError("unsupported geometry " + kind)
+
+
+def ring_has_reflex_corner(ring):
+    pts = [(p[0], p[1]) for p in ring]
+    if pts[0] == pts[-1]:
+        pts = pts[:-1]
+    n = len(pts)
+    area2 = sum(pts[i][0] * pts[(i + 1) % n][1] - pts[(i + 1) % n][0] * pts[i][1] for i in range(n))
+    sign = 1 if area2 > 0 else -1
+    for i in range(n):
+        ax, ay = pts[i - 1]
+        bx, by = pts[i]
+        cx, cy = pts[(i + 1) % n]
+        cross = (bx - ax) * (cy - by) - (by - ay) * (cx - bx)
+        if cross * sign < 0:
+            return True
+    return False
+
+
+def is_concave(path):
+    with open(path) as f:
+        polygons = parse_wkt_polygons(f.read())
+    return any(len(rings) > 1 or ring_has_reflex_corner(rings[0]) for rings in polygons)
+
+
+def concave_shapes():
+    shapes_dir = os.path.join(ROOT, "shapes")
+    names = sorted(n for n in os.listdir(shapes_dir) if n.endswith(".wkt"))
+    return [n for n in names if is_concave(os.path.join(shapes_dir, n))]
+
+
+# --- running the tool ------------------------------------------------------------------------
+
+def run(cmd):
+    r = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    if r.returncode != 0:
+        sys.exit("command failed (exit %d): %s\n%s" % (r.returncode, " ".join(cmd), r.stderr))
+    return r.stdout + r.stderr
+
+
+def shape_area(tool, shape_path):
+    out = run([tool, "info", shape_path])
+    m = re.search(r"area:\s*([0-9.eE+-]+)", out)
+    if not m:
+        sys.exit("no area in `frontpack info %s`:\n%s" % (shape_path, out))
+    return float(m.group(1))
+
+
+def round2(x):
+    """x rounded to 2 significant digits."""
+    e = math.floor(math.log10(x))
+    return round(x / 10 ** e, 1) * 10 ** e
+
+
+def radius_spec(area, disks):
+    # Uniform radii in [r, 10 r]: E[r^2] = (1000 - 1) / (3 * 9) r^2 = 37 r^2; about 0.8 of the
+    # area covered.
+    r = round2(math.sqrt(0.8 * area / (disks * math.pi * 37.0)))
+    return "uniform:%s,%s" % (fmt_num(r), fmt_num(RATIO * r))
+
+
+def fmt_num(x):
+    return ("%.6g" % x)
+
+
+def fill(tool, shape_path, method, spec, seed, workdir, extra=()):
+    js = os.path.join(workdir, "summary.json")
+    csv = os.path.join(workdir, "disks.csv")
+    run([tool, "fill", shape_path, "--method", method, "--radius", spec, "--seed", str(seed),
+         "--json", js, "-q", "-o", csv] + list(extra))
+    with open(js) as f:
+        return json.load(f), csv
+
+
+def measure_row(tool, shape, method, spec, workdir):
+    path = os.path.join(ROOT, "shapes", shape)
+    keys = ("disks", "overall", "interior", "band", "diff", "ks", "culled", "us_per_disk")
+    acc = {k: 0.0 for k in keys}
+    for seed in SEEDS:
+        j, _ = fill(tool, path, method, spec, seed, workdir)
+        disks = j["disks"]
+        acc["disks"] += disks
+        acc["overall"] += j["packing_fraction"]
+        acc["interior"] += j["interior_fraction"]
+        acc["band"] += j["band_fraction"]
+        acc["diff"] += j["band_fraction"] - j["interior_fraction"]
+        acc["ks"] += j["radius"]["ks_by_area"]
+        acc["culled"] += j["certificate"]["culled"]
+        acc["us_per_disk"] += 1e6 * j["seconds"]["front"] / max(disks, 1)
+    return {k: v / len(SEEDS) for k, v in acc.items()}
+
+
+def table(tool, shapes, disks, log):
+    lines = [
+        "| shape | radius | method | disks | overall | interior | band | band - interior | KS by area | culled | front µs/disk |",
+        "|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|",
+    ]
+    with tempfile.TemporaryDirectory(prefix="density_table_") as workdir:
+        for shape in shapes:
+            spec = radius_spec(shape_area(tool, os.path.join(ROOT, "shapes", shape)), disks)
+            for method in METHODS:
+                t0 = time.monotonic()
+                m = measure_row(tool, shape, method, spec, workdir)
+                log("%-22s %-9s %-28s %6.0f disks  %.1f s" % (shape, method, spec, m["disks"], time.monotonic() - t0))
+                lines.append(
+                    "| %s | `%s` | %s | %.0f | %.4f | %.4f | %.4f | %+.4f | %.4f | %.0f | %.2f |"
+                    % (shape.removesuffix(".wkt"), spec, method, m["disks"], m["overall"], m["interior"],
+                       m["band"], m["diff"], m["ks"], m["culled"], m["us_per_disk"]))
+    return "\n".join(lines) + "\n"
+
+
+def pictures(tool, out_dir, log):
+    """Closed, open and boundary fills of the same domain, same radii and seed, as PNGs."""
+    os.makedirs(out_dir, exist_ok=True)
+    shape_path = os.path.join(ROOT, "shapes", PICTURE_SHAPE)
+    with tempfile.TemporaryDirectory(prefix="density_pictures_") as workdir:
+        for method in METHODS:
+            # The commands, as docs/density.md gives them:
+            #   frontpack fill shapes/gear.wkt --method M --radius uniform:0.0028,0.028 --seed 1 -o M.csv
+            #   frontpack render shapes/gear.wkt M.csv -o docs/img/density-M.png --width 540 --no-histogram
+            j, csv = fill(tool, shape_path, method, PICTURE_RADIUS, PICTURE_SEED, workdir)
+            png = os.path.join(out_dir, "density-%s.png" % method)
+            run([tool, "render", shape_path, csv, "-o", png, "--width", str(PICTURE_WIDTH), "--no-histogram", "-q"])
+            log("%s: %d disks, band %.4f, interior %.4f, %d bytes"
+                % (png, j["disks"], j["band_fraction"], j["interior_fraction"], os.path.getsize(png)))
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    ap.add_argument("--frontpack", default=os.path.join(ROOT, "build", "release", "tools", "frontpack"),
+                    help="the frontpack tool (default: build/release/tools/frontpack)")
+    ap.add_argument("--out", help="write the table to this file (default: stdout)")
+    ap.add_argument("--disks", type=int, default=40000, help="about this many disks per run (default 40000)")
+    ap.add_argument("--shapes", nargs="*", help="these shapes (file names in shapes/) instead of every concave one")
+    ap.add_argument("--pictures", action="store_true",
+                    help="write docs/img/density-{closed,open,boundary}.png (%s, %s, seed %d, %d px) and no table"
+                    % (PICTURE_SHAPE, PICTURE_RADIUS, PICTURE_SEED, PICTURE_WIDTH))
+    ap.add_argument("--img-dir", default=os.path.join(ROOT, "docs", "img"), help="where --pictures writes")
+    ap.add_argument("-q", "--quiet", action="store_true", help="no progress lines on stderr")
+    args = ap.parse_args()
+
+    tool = os.path.abspath(args.frontpack)
+    if not os.access(tool, os.X_OK):
+        sys.exit("no frontpack tool at %s (build it, or give --frontpack)" % tool)
+
+    def log(msg):
+        if not args.quiet:
+            print(msg, file=sys.stderr, flush=True)
+
+    if args.pictures:
+        pictures(tool, args.img_dir, log)
+        return
+
+    shapes = args.shapes if args.shapes else concave_shapes()
+    t0 = time.monotonic()
+    text = table(tool, shapes, args.disks, log)
+    log("total %.0f s" % (time.monotonic() - t0))
+    if args.out:
+        with open(args.out, "w") as f:
+            f.write(text)
+    else:
+        sys.stdout.write(text)
+
+
+if __name__ == "__main__":
+    main()
