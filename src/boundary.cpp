@@ -54,9 +54,9 @@ namespace frontpack::detail {
 namespace {
 
 constexpr std::int32_t kNone = std::numeric_limits<std::int32_t>::min();
-constexpr int kClasses = 24;          // void buckets (log-spaced radius classes)
-constexpr int kMoves = 3;             // alternatives tried per front gap (cases (b)-(d))
-constexpr int kVoidMoves = 1;         // and per void
+constexpr int kClasses = 24;   // void buckets (log-spaced radius classes)
+constexpr int kMoves = 3;      // alternatives tried per front gap (cases (b)-(d))
+constexpr int kVoidMoves = 1;  // and per void
 constexpr std::uint64_t kLowHalf = 0xffffffffULL;
 
 class BoundaryFront {
@@ -576,7 +576,8 @@ class BoundaryFront {
     const double qc = ux * ux + uy * uy - ra * ra;
     double best = -1;
     auto consider = [&](double rho) {
-      if (rho > 0 && std::isfinite(rho) && bx * (uy + rho * vy) - by * (ux + rho * vx) > 0 && (best < 0 || rho < best)) {
+      if (rho > 0 && std::isfinite(rho) && bx * (uy + rho * vy) - by * (ux + rho * vx) > 0 &&
+          (best < 0 || rho < best)) {
         best = rho;
       }
     };
@@ -826,7 +827,7 @@ class BoundaryFront {
   std::size_t wall_head_ = 0;
   std::size_t head_ = 0;
   std::array<std::vector<Gap>, 64> voids_;  // [k]: class k; [32 + k]: class k, on a wall
-  std::uint64_t mask_ = 0;  // bit k: voids_[k] is not empty
+  std::uint64_t mask_ = 0;                  // bit k: voids_[k] is not empty
 
   double cell_ = 1, inv_cell_ = 1, gx0_ = 0, gy0_ = 0;
   std::size_t gnx_ = 1, gny_ = 1;

@@ -21,9 +21,9 @@ namespace frontpack::detail {
 struct BoundaryRequest {
   const Polygon* polygon = nullptr;  ///< normalised: outer ring anticlockwise, holes clockwise
   const RadiusDistribution* radii = nullptr;
-  double clearance = 0;        ///< absolute, > 0 (fill.cpp computes the default)
-  std::size_t max_disks = 0;   ///< stop when this many disks have been generated in total
-  bool fill_voids = true;      ///< try each new disk in the voids behind the front first
+  double clearance = 0;       ///< absolute, > 0 (fill.cpp computes the default)
+  std::size_t max_disks = 0;  ///< stop when this many disks have been generated in total
+  bool fill_voids = true;     ///< try each new disk in the voids behind the front first
   /// As FrontRequest::tick.
   std::function<bool(std::size_t, double)> tick;
 };

@@ -40,7 +40,7 @@ constexpr std::int32_t kBottom = 1;  // Bb
 constexpr std::int32_t kRight = 2;   // Br
 constexpr std::int32_t kFirstDisk = 3;
 constexpr double kListAspect = 4;  // see Front::link
-constexpr int kVoidClasses = 16;    // void buckets (log-spaced radius classes), see Front::cut
+constexpr int kVoidClasses = 16;   // void buckets (log-spaced radius classes), see Front::cut
 
 template <bool Open>
 class Front {

@@ -706,7 +706,9 @@ int main(int argc, char** argv) {
   FillArgs fill_args;
   auto* fill = app.add_subcommand("fill", "Fill a domain with disks (advancing front, certified exactly)");
   add_domain_options(*fill, fill_args.src);
-  fill->add_option("--method", fill_args.method, "closed (Sec. 2), open (Sec. 3) or boundary (the domain's edges as walls)")->capture_default_str();
+  fill->add_option("--method", fill_args.method,
+                   "closed (Sec. 2), open (Sec. 3) or boundary (the domain's edges as walls)")
+      ->capture_default_str();
   fill->add_option("--radius", fill_args.radius, kRadiusHelp)->capture_default_str();
   fill->add_option("--seed", fill_args.seed, "64-bit seed (same seed, same packing)")->capture_default_str();
   fill->add_option("--max-disks", fill_args.max_disks, "refuse or stop runs beyond this many disks")
