@@ -571,27 +571,9 @@ class BoundaryFront {
     const double uy = (bx * alpha_d - dx * alpha_b) / det;
     const double vx = (beta_b * dy - beta_d * by) / det;
     const double vy = (bx * beta_d - dx * beta_b) / det;
-    const double qa = vx * vx + vy * vy - 1;
-    const double qb = 2 * (ux * vx + uy * vy - ra);
-    const double qc = ux * ux + uy * uy - ra * ra;
-    double best = -1;
-    auto consider = [&](double rho) {
-      if (rho > 0 && std::isfinite(rho) && bx * (uy + rho * vy) - by * (ux + rho * vx) > 0 &&
-          (best < 0 || rho < best)) {
-        best = rho;
-      }
-    };
-    if (qa == 0) {
-      consider(-qc / qb);
-    } else {
-      const double disc = qb * qb - 4 * qa * qc;
-      if (disc >= 0) {
-        const double sq = std::sqrt(disc);
-        consider((-qb + sq) / (2 * qa));
-        consider((-qb - sq) / (2 * qa));
-      }
-    }
-    return best;
+    // On the left of a -> b: the pocket, not the circle on the far side.
+    return smallest_root(ux, uy, vx, vy, ra,
+                         [&](double rho) { return bx * (uy + rho * vy) - by * (ux + rho * vx) > 0; });
   }
 
   // pocket() with one wall among the three: the circle of radius rho at distance rho from the
@@ -627,17 +609,18 @@ class BoundaryFront {
     const double uy = (cx * off - wl.nx * alpha) / det;
     const double vx = (beta * wl.ny - 1 * cy) / det;
     const double vy = (cx * 1 - wl.nx * beta) / det;
-    return smallest_root(ux, uy, vx, vy, ri);
+    return smallest_root(ux, uy, vx, vy, ri, [](double) { return true; });
   }
 
-  // The smallest rho > 0 with |u + rho v| = ri + rho, or -1.
-  static double smallest_root(double ux, double uy, double vx, double vy, double ri) noexcept {
+  // The smallest rho > 0 with |u + rho v| = ri + rho that `accept` takes, or -1.
+  template <class Accept>
+  static double smallest_root(double ux, double uy, double vx, double vy, double ri, Accept accept) noexcept {
     const double qa = vx * vx + vy * vy - 1;
     const double qb = 2 * (ux * vx + uy * vy - ri);
     const double qc = ux * ux + uy * uy - ri * ri;
     double best = -1;
     auto consider = [&](double rho) {
-      if (rho > 0 && std::isfinite(rho) && (best < 0 || rho < best)) {
+      if (rho > 0 && std::isfinite(rho) && accept(rho) && (best < 0 || rho < best)) {
         best = rho;
       }
     };
