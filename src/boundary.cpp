@@ -470,6 +470,10 @@ class BoundaryFront {
 
   // The element the candidate overlaps most deeply (a disk, a reflex vertex or a wall), or kNone.
   // Elements a and b, the candidate's parents, are skipped among the nodes (it touches them).
+  // With Any, the first element found that the candidate overlaps: for callers that only need to
+  // know whether there is one (most candidates that get this far overlap something, and the scan
+  // ends there).
+  template <bool Any = false>
   std::int32_t deepest(const Probe& p, std::int32_t a, std::int32_t b) {
     std::int32_t best = kNone;
     double best_depth = 0;
@@ -480,6 +484,9 @@ class BoundaryFront {
       const Wall& wl = walls_[wall_index(e)];
       const double d2 = distance2(wl, p.x, p.y);
       if (d2 < reach * reach) {
+        if constexpr (Any) {
+          return e;
+        }
         const double dd = reach - std::sqrt(d2);
         if (best == kNone || dd > best_depth) {
           best = e;
@@ -500,6 +507,9 @@ class BoundaryFront {
           const Node& o = nodes[d];
           if (d != a && d != b) {
             const double dd = depth(p, o);
+            if (Any && dd > 0) {
+              return d;
+            }
             if (dd > 0 && (best == kNone || dd > best_depth)) {
               best = d;
               best_depth = dd;
@@ -676,7 +686,7 @@ class BoundaryFront {
         continue;
       }
       const std::int32_t a = add_node(sx, sy, r);
-      if (deepest(Probe{tx, sy, r2, r2 + margin_ + band_, r2 + margin_ - band_}, a, kNone) != kNone) {
+      if (deepest<true>(Probe{tx, sy, r2, r2 + margin_ + band_, r2 + margin_ - band_}, a, kNone) != kNone) {
         continue;  // cannot happen (they are apart by the clearance); kept for safety
       }
       const std::int32_t b = add_node(tx, sy, r2);
@@ -694,7 +704,7 @@ class BoundaryFront {
     if (!(x - r >= 0 && x + r <= width_ && y - r >= 0 && y + r <= height_)) {
       return false;
     }
-    return deepest(Probe{x, y, r, r + margin_ + band_, r + margin_ - band_}, kNone, kNone) == kNone;
+    return deepest<true>(Probe{x, y, r, r + margin_ + band_, r + margin_ - band_}, kNone, kNone) == kNone;
   }
 
   // Crossing number over all walls (floating point; a seed centre is far from every wall).
@@ -729,7 +739,8 @@ class BoundaryFront {
         return false;  // outside the polygon's box, so outside the polygon
       }
       const Probe p{px, py, r, r + margin_ + band_, r + margin_ - band_};
-      const std::int32_t d = deepest(p, x, y);
+      // At the last move, only whether anything is in the way matters.
+      const std::int32_t d = move == moves && move > 0 ? deepest<true>(p, x, y) : deepest(p, x, y);
       if (d == kNone) {
         if (!supported_by(x, px, py) || !supported_by(y, px, py)) {
           return false;
