@@ -345,6 +345,58 @@ std::size_t wall_contacts(const EdgeIndex& edges, const Disk& d, double tol) {
   return points.size();
 }
 
+// The radius with half of the area (sum of r^2) at or below it; sorts r. 0 for none.
+double median_by_area(std::vector<double>& r) {
+  std::sort(r.begin(), r.end());
+  double total = 0;
+  for (const double x : r) {
+    total += x * x;
+  }
+  double acc = 0;
+  for (const double x : r) {
+    acc += x * x;
+    if (acc >= total / 2) {
+      return x;
+    }
+  }
+  return 0;
+}
+
+// Two-sample Kolmogorov-Smirnov distance by area, sup over r of |A_a(r) - A_b(r)| with A_s(r) the
+// share of s's area in radii <= r; a and b sorted. 0 if either is empty.
+double ks_by_area(const std::vector<double>& a, const std::vector<double>& b) {
+  if (a.empty() || b.empty()) {
+    return 0;
+  }
+  double total_a = 0;
+  double total_b = 0;
+  for (const double x : a) {
+    total_a += x * x;
+  }
+  for (const double x : b) {
+    total_b += x * x;
+  }
+  double ks = 0;
+  double acc_a = 0;
+  double acc_b = 0;
+  std::size_t i = 0;
+  std::size_t j = 0;
+  while (i < a.size() || j < b.size()) {
+    // Both sides of each jump: take every radius equal to the smallest one left, then compare.
+    const double x = j == b.size() || (i < a.size() && a[i] <= b[j]) ? a[i] : b[j];
+    while (i < a.size() && a[i] == x) {
+      acc_a += x * x;
+      ++i;
+    }
+    while (j < b.size() && b[j] == x) {
+      acc_b += x * x;
+      ++j;
+    }
+    ks = std::max(ks, std::abs(acc_a / total_a - acc_b / total_b));
+  }
+  return ks;
+}
+
 }  // namespace
 
 SizeStats measure_sizes(std::span<const double> radii, const RadiusDistribution* requested,
@@ -552,6 +604,16 @@ PackingStats measure(const Domain& domain, std::span<const Disk> disks, const St
       non_rattlers > 0 ? static_cast<double>(non_rattler_contacts) / non_rattlers : 0;
   s.interior_coordination =
       s.interior_disks > 0 ? static_cast<double>(interior_contacts) / static_cast<double>(s.interior_disks) : 0;
+
+  std::vector<double> band;
+  std::vector<double> inside;
+  for (const Disk& d : disks) {
+    (edges.closer_than(d.centre, w) ? band : inside).push_back(d.radius);
+  }
+  s.band_disks = band.size();
+  s.band_median_area = median_by_area(band);
+  s.inside_median_area = median_by_area(inside);
+  s.segregation_ks_area = ks_by_area(band, inside);
   return s;
 }
 

@@ -123,6 +123,43 @@ TEST(Stats, ContactToleranceAndRattlers) {
   EXPECT_EQ(s.contacts, 0U);
 }
 
+// Band disks (centre within band_width of the boundary) against the others: medians by area and
+// the two-sample KS distance by area, on hand-computed configurations.
+TEST(Stats, SizeSegregation) {
+  const fp::Domain domain = rectangle(20, 20);
+  fp::StatsOptions o;
+  o.samples = 0;
+  o.band_width = 4;
+  // Small disks along the bottom wall, large ones inside: fully segregated.
+  std::vector<fp::Disk> disks = {{{2, 1}, 0.5}, {{4, 1}, 0.5}, {{10, 10}, 2}, {{15, 10}, 2}};
+  fp::PackingStats s = fp::measure(domain, disks, o);
+  EXPECT_EQ(s.band_disks, 2U);
+  EXPECT_EQ(s.band_median_area, 0.5);
+  EXPECT_EQ(s.inside_median_area, 2);
+  EXPECT_DOUBLE_EQ(s.segregation_ks_area, 1);
+  // The same mix of sizes on both sides: 0.
+  disks = {{{2, 1}, 0.5}, {{8, 2}, 1}, {{10, 10}, 0.5}, {{15, 10}, 1}};
+  s = fp::measure(domain, disks, o);
+  EXPECT_EQ(s.band_disks, 2U);
+  EXPECT_EQ(s.band_median_area, 1);
+  EXPECT_EQ(s.inside_median_area, 1);
+  EXPECT_EQ(s.segregation_ks_area, 0);
+  // Band {1, 1} against inside {1, 2}: by area, 1 against 1 / 5 below radius 2.
+  disks = {{{2, 1}, 1}, {{8, 2}, 1}, {{10, 10}, 1}, {{15, 10}, 2}};
+  s = fp::measure(domain, disks, o);
+  EXPECT_DOUBLE_EQ(s.segregation_ks_area, 0.8);
+  EXPECT_EQ(s.inside_median_area, 2);
+  // The band is measured from every ring: a disk next to a hole is a band disk.
+  const fp::Domain holed = fp::Domain::from_wkt("POLYGON((0 0,20 0,20 20,0 20,0 0),(9 9,11 9,11 11,9 11,9 9))");
+  s = fp::measure(holed, std::vector<fp::Disk>{{{12.5, 10}, 1}, {{5, 15}, 1}}, o);
+  EXPECT_EQ(s.band_disks, 1U);
+  // Nothing on one side: 0, and no failure.
+  s = fp::measure(domain, std::vector<fp::Disk>{{{10, 10}, 1}}, o);
+  EXPECT_EQ(s.band_disks, 0U);
+  EXPECT_EQ(s.band_median_area, 0);
+  EXPECT_EQ(s.segregation_ks_area, 0);
+}
+
 TEST(Stats, SizeComparison) {
   const fp::Radii requested = fp::Radii::uniform(1, 2);
   // One radius at the median: the empirical cdf jumps from 0 to 1 there.

@@ -321,6 +321,10 @@ Json stats_json(const frontpack::PackingStats& s) {
               {"wall_contacts", s.wall_contacts},
               {"rattlers", s.rattlers},
               {"contact_gap", s.contact_gap},
+              {"band_disks", s.band_disks},
+              {"band_median_by_area", s.band_median_area},
+              {"inside_median_by_area", s.inside_median_area},
+              {"segregation_ks_by_area", s.segregation_ks_area},
               {"radius", sizes_json(s.sizes)}};
 }
 
@@ -656,6 +660,11 @@ int run_stats(const StatsArgs& a) {
             << " in the interior (" << s.interior_disks << " disks); " << s.contacts << " contacts, " << s.wall_contacts
             << " wall contacts, " << s.rattlers << " rattlers (gap <= " << fmt(s.contact_gap)
             << " counts as contact)\n";
+  if (s.band_disks > 0 && s.band_disks < s.disks) {
+    std::cout << "segregation:  median radius by area " << fmt(s.band_median_area) << " in the band ("
+              << s.band_disks << " disks), " << fmt(s.inside_median_area) << " inside; KS by area "
+              << fmt4(s.segregation_ks_area) << "\n";
+  }
   return ok;
 }
 

@@ -30,6 +30,11 @@
 // - Sizes: the achieved radii against the requested distribution, by number and by area (each
 //   disk weighted by r^2); Kolmogorov-Smirnov distances sup |F_achieved - F_requested|; a table
 //   per class for discrete and grading-curve requests; a log-spaced histogram.
+// - Size segregation: the disks whose centre lies within band_width of the boundary ("band
+//   disks") against the others. Their medians by area, and the two-sample Kolmogorov-Smirnov
+//   distance by area between their radii: 0 when the walls hold the same mix of sizes as the
+//   inside; a generator that fills the cusps along the walls with the small disks shows it (the
+//   band then holds more of the fines than the inside, a wall effect of its own).
 //
 // Cost: linear in the disks and the samples (uniform grids): about 0.5 s per million samples plus
 // 0.1 s per 50,000 disks (one core of an AMD EPYC).
@@ -133,6 +138,11 @@ struct PackingStats {
   double mean_coordination_without_rattlers = 0;    ///< disk-disk contacts of non-rattlers, per non-rattler
   std::size_t interior_disks = 0;                   ///< disks wholly in the interior
   double interior_coordination = 0;                 ///< their mean number of disk-disk contacts
+
+  std::size_t band_disks = 0;         ///< disks with the centre within band_width of the boundary
+  double band_median_area = 0;        ///< median radius by area of the band disks (0: none)
+  double inside_median_area = 0;      ///< the same for the other disks
+  double segregation_ks_area = 0;     ///< two-sample KS distance by area, band disks against the others
 
   SizeStats sizes;
 };
