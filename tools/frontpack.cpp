@@ -661,9 +661,9 @@ int run_stats(const StatsArgs& a) {
             << " wall contacts, " << s.rattlers << " rattlers (gap <= " << fmt(s.contact_gap)
             << " counts as contact)\n";
   if (s.band_disks > 0 && s.band_disks < s.disks) {
-    std::cout << "segregation:  median radius by area " << fmt(s.band_median_area) << " in the band ("
-              << s.band_disks << " disks), " << fmt(s.inside_median_area) << " inside; KS by area "
-              << fmt4(s.segregation_ks_area) << "\n";
+    std::cout << "segregation:  median radius by area " << fmt(s.band_median_area) << " in the band (" << s.band_disks
+              << " disks), " << fmt(s.inside_median_area) << " inside; KS by area " << fmt4(s.segregation_ks_area)
+              << "\n";
   }
   return ok;
 }

@@ -139,10 +139,10 @@ struct PackingStats {
   std::size_t interior_disks = 0;                   ///< disks wholly in the interior
   double interior_coordination = 0;                 ///< their mean number of disk-disk contacts
 
-  std::size_t band_disks = 0;         ///< disks with the centre within band_width of the boundary
-  double band_median_area = 0;        ///< median radius by area of the band disks (0: none)
-  double inside_median_area = 0;      ///< the same for the other disks
-  double segregation_ks_area = 0;     ///< two-sample KS distance by area, band disks against the others
+  std::size_t band_disks = 0;      ///< disks with the centre within band_width of the boundary
+  double band_median_area = 0;     ///< median radius by area of the band disks (0: none)
+  double inside_median_area = 0;   ///< the same for the other disks
+  double segregation_ks_area = 0;  ///< two-sample KS distance by area, band disks against the others
 
   SizeStats sizes;
 };
