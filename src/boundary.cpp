@@ -54,9 +54,11 @@ namespace frontpack::detail {
 namespace {
 
 constexpr std::int32_t kNone = std::numeric_limits<std::int32_t>::min();
-constexpr int kClasses = 24;   // void buckets (log-spaced radius classes)
-constexpr int kMoves = 3;      // alternatives tried per front gap (cases (b)-(d))
-constexpr int kVoidMoves = 1;  // and per void
+constexpr int kClasses = 24;             // void buckets (log-spaced radius classes)
+constexpr int kMoves = 3;                // alternatives tried per front gap (cases (b)-(d))
+constexpr int kVoidMoves = 1;            // and per void
+constexpr std::uint32_t kWallList = 16;  // a cell with more walls than this asks the wall tree
+constexpr std::size_t kLeafWalls = 4;    // walls per leaf of the wall tree
 constexpr std::uint64_t kLowHalf = 0xffffffffULL;
 
 class BoundaryFront {
@@ -106,6 +108,7 @@ class BoundaryFront {
     nodes_.reserve(reserve);
     setup_walls();
     setup_grid();
+    build_wall_tree();
     for (const Wall& w : walls_) {
       polygon_area_ += (w.ax * w.by - w.bx * w.ay) / 2;  // holes (clockwise) subtract
     }
@@ -425,6 +428,81 @@ class BoundaryFront {
   }
 
   // ------------------------------------------------------------------------------------------
+  // The walls in a bounding-box tree, for cells whose list is long (a ring of 100,000 short edges
+  // puts hundreds of walls within rmax of every cell along it; scanning them all made such rings
+  // cost hundreds of microseconds per disk). The tree is implicit over the walls in their order,
+  // which follows the rings, so consecutive walls are neighbours and a node's box stays small:
+  // leaves of kLeafWalls walls, node k's children 2k and 2k + 1, leaves from index leaves_. Built
+  // once; queries allocate nothing. (Boost.Geometry's rtree allocates in its nearest query, and
+  // CGAL 5.5's AABB tree is three-dimensional only.)
+
+  struct Bounds {
+    double xmin, ymin, xmax, ymax;
+  };
+
+  void build_wall_tree() {
+    const std::size_t n = walls_.size();
+    const std::size_t leaves = (n + kLeafWalls - 1) / kLeafWalls;
+    leaves_ = std::bit_ceil(std::max<std::size_t>(leaves, 1));
+    const double inf = std::numeric_limits<double>::infinity();
+    tree_.assign(2 * leaves_, Bounds{inf, inf, -inf, -inf});
+    for (std::size_t e = 0; e < n; ++e) {
+      Bounds& b = tree_[leaves_ + e / kLeafWalls];
+      const Wall& wl = walls_[e];
+      b.xmin = std::min({b.xmin, wl.ax, wl.bx});
+      b.ymin = std::min({b.ymin, wl.ay, wl.by});
+      b.xmax = std::max({b.xmax, wl.ax, wl.bx});
+      b.ymax = std::max({b.ymax, wl.ay, wl.by});
+    }
+    for (std::size_t k = leaves_ - 1; k >= 1; --k) {
+      const Bounds& l = tree_[2 * k];
+      const Bounds& r = tree_[2 * k + 1];
+      tree_[k] = Bounds{std::min(l.xmin, r.xmin), std::min(l.ymin, r.ymin), std::max(l.xmax, r.xmax),
+                        std::max(l.ymax, r.ymax)};
+    }
+  }
+
+  // Squared distance from (x, y) to box b (0 inside; infinite for an empty box).
+  static double distance2(const Bounds& b, double x, double y) noexcept {
+    const double dx = std::max({b.xmin - x, 0.0, x - b.xmax});
+    const double dy = std::max({b.ymin - y, 0.0, y - b.ymax});
+    return dx * dx + dy * dy;
+  }
+
+  // The wall nearest to (x, y) at a squared distance below d2 (on return, its squared distance),
+  // or kNone. Of walls at the same distance, the first in order, as the cell lists have them.
+  std::int32_t nearest_wall(double x, double y, double& d2) const noexcept {
+    std::int32_t best = kNone;
+    std::array<std::size_t, 128> stack{};  // depth <= 64: at most one deferred sibling per level
+    std::size_t top = 0;
+    stack[top++] = 1;
+    while (top > 0) {
+      const std::size_t k = stack[--top];
+      if (!(distance2(tree_[k], x, y) <= d2)) {
+        continue;
+      }
+      if (k >= leaves_) {
+        const std::size_t first = (k - leaves_) * kLeafWalls;
+        const std::size_t last = std::min(first + kLeafWalls, walls_.size());
+        for (std::size_t e = first; e < last; ++e) {
+          const double w2 = distance2(walls_[e], x, y);
+          const auto id = -(static_cast<std::int32_t>(e) + 1);
+          if (w2 < d2 || (w2 == d2 && best != kNone && id > best)) {
+            d2 = w2;
+            best = id;
+          }
+        }
+        continue;
+      }
+      // The nearer child on top, so that it is searched first and prunes the other.
+      const bool left_first = distance2(tree_[2 * k], x, y) <= distance2(tree_[2 * k + 1], x, y);
+      stack[top++] = left_first ? 2 * k + 1 : 2 * k;
+      stack[top++] = left_first ? 2 * k : 2 * k + 1;
+    }
+    return best;
+  }
+
+  // ------------------------------------------------------------------------------------------
   // Overlap tests.
 
   struct Probe {
@@ -479,18 +557,31 @@ class BoundaryFront {
     double best_depth = 0;
     const std::size_t home = cell_of(p.x, p.y);
     const double reach = p.r + margin_;
-    for (std::uint32_t k = wall_begin_[home]; k < wall_begin_[home + 1]; ++k) {
-      const std::int32_t e = wall_ids_[k];
-      const Wall& wl = walls_[wall_index(e)];
-      const double d2 = distance2(wl, p.x, p.y);
-      if (d2 < reach * reach) {
+    if (wall_begin_[home + 1] - wall_begin_[home] > kWallList) {
+      // A finely divided boundary: the nearest wall, from the tree, is the deepest one.
+      double d2 = reach * reach;
+      const std::int32_t e = nearest_wall(p.x, p.y, d2);
+      if (e != kNone) {
         if constexpr (Any) {
           return e;
         }
-        const double dd = reach - std::sqrt(d2);
-        if (best == kNone || dd > best_depth) {
-          best = e;
-          best_depth = dd;
+        best = e;
+        best_depth = reach - std::sqrt(d2);
+      }
+    } else {
+      for (std::uint32_t k = wall_begin_[home]; k < wall_begin_[home + 1]; ++k) {
+        const std::int32_t e = wall_ids_[k];
+        const Wall& wl = walls_[wall_index(e)];
+        const double d2 = distance2(wl, p.x, p.y);
+        if (d2 < reach * reach) {
+          if constexpr (Any) {
+            return e;
+          }
+          const double dd = reach - std::sqrt(d2);
+          if (best == kNone || dd > best_depth) {
+            best = e;
+            best_depth = dd;
+          }
         }
       }
     }
@@ -828,6 +919,8 @@ class BoundaryFront {
   std::vector<std::int32_t> head_cell_;
   std::vector<std::uint32_t> wall_begin_, fill_at_;
   std::vector<std::int32_t> wall_ids_;
+  std::vector<Bounds> tree_;  // the wall tree (build_wall_tree)
+  std::size_t leaves_ = 1;
 };
 
 }  // namespace

@@ -247,6 +247,27 @@ fp::Domain hundred_thousand_vertex_ring() {
 
 }  // namespace
 
+// A smooth 100,000-vertex circle of radius 10: every cell along it holds hundreds of walls, so
+// the overlap test asks the wall tree for the nearest one. Every vertex is a (nearly flat) corner
+// where the front starts; the band must still pack.
+TEST(BoundaryHostile, SmoothHundredThousandVertexCircle) {
+  std::vector<fp::Point> ring;
+  const int n = 100'000;
+  for (int k = 0; k < n; ++k) {
+    const double t = 2 * std::numbers::pi * k / n;
+    ring.push_back({10 * std::cos(t), 10 * std::sin(t)});
+  }
+  const fp::Domain d = fp::Domain::from_rings(ring);
+  const fp::Packing p = fill(d, fp::Method::boundary, fp::Radii::uniform(0.05, 0.15), 1);
+  expect_certified(d, p);
+  EXPECT_GT(p.disks.size(), 7000U);
+  fp::StatsOptions so;
+  so.samples = 200'000;
+  const fp::PackingStats s = fp::measure(d, p.disks, so);
+  EXPECT_GT(s.band_fraction, s.interior_fraction - 0.02)
+      << "band " << s.band_fraction << ", interior " << s.interior_fraction;
+}
+
 // The ring's inside is a disk of radius about 9.7: the closed form puts 7,414 disks in it. The saw
 // is rougher than the smallest disk, so the boundary method cannot start its front on the walls.
 TEST(BoundaryHostile, HundredThousandVertexRingIsFilled) {
