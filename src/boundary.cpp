@@ -8,7 +8,12 @@
 // Gaps. The front is kept as its segments alone, without the list that links them: a gap (a, b)
 // says "a disk may touch a and b, on the left of a -> b", the left being the free side (every
 // ring of a normalised polygon has the domain on its left). The initial gaps are the corners of
-// every ring: (e_in, e_out) at a convex corner, (e_in, v) and (v, e_out) at a reflex vertex v. A
+// every ring: (e_in, e_out) at a convex corner, (e_in, v) and (v, e_out) at a reflex vertex v,
+// where the boundary turns by at least kSlideTurn (20 degrees). A vertex where it turns less is
+// no corner but a bend in a wall: a disk touching a wall whose foot falls past the wall's end
+// slides onto the next wall across such bends (slide()), so that a curve divided into many short
+// edges gets one wall layer along it, not one start per vertex (a ring without a corner starts at
+// its sharpest vertex). A
 // disk n placed in gap (a, b) replaces it with (a, n) and (n, b), exactly as the paper's front
 // replaces segment a -> b by a -> n -> b. Gaps are taken first in, first out, so the front moves
 // inwards layer by layer from every ring at once, and fronts that meet need no merging: a
@@ -21,12 +26,15 @@
 // there, or less, the radius of the pocket between its two elements and the element in the way
 // (pocket(): Apollonius' problem for three disks, or two disks and a wall). The cusps behind each
 // new disk (between it, a wall it touches and its other parent; or between two parents that do
-// not touch) are kept the same way. Each new radius is tried first in the voids, those on a wall
-// first (the band along the walls is where a boundary packing is thinnest), in the tightest
-// class whose radii all exceed it, then on the front. Every drawn radius is placed where it fits,
-// so the size distribution is the requested one; the run ends when the front is done and no void
-// can take the radius drawn. A void that fails again moves to a smaller class; one that can take
-// nothing is dropped, so every gap is tried a bounded number of times and the run ends.
+// not touch) are kept the same way. Each new radius is tried first in the voids, those on a rough
+// wall first, in the tightest class whose radii all exceed it, then on the front. A rough wall is
+// an edge shorter than 2 rmax that meets a corner: the crevices of a boundary rough at the scale
+// of the disks take only the small ones, and without the priority these would go to the more
+// recent voids inside and leave the band sparse. (On smooth walls the priority overfills the band
+// with small disks: it is then denser than the interior, and the interior sparser.) Every drawn radius is placed where
+// it fits, so the size distribution is the requested one; the run ends when the front is done and no void can take the
+// radius drawn. A void that fails again moves to a smaller class; one that can take nothing is dropped, so every gap is
+// tried a bounded number of times and the run ends.
 //
 // Order. Gaps on a wall or a reflex vertex are taken before the others, so the first layer along
 // every wall is laid (from every corner) before the interior fronts arrive; without that, fronts
@@ -59,6 +67,9 @@ constexpr int kMoves = 3;                // alternatives tried per front gap (ca
 constexpr int kVoidMoves = 1;            // and per void
 constexpr std::uint32_t kWallList = 16;  // a cell with more walls than this asks the wall tree
 constexpr std::size_t kLeafWalls = 4;    // walls per leaf of the wall tree
+// A vertex where the boundary turns by less than this (20 degrees) is no corner: the front does
+// not start there, and the wall layer slides across it (slide()).
+constexpr double kSlideTurn = 0.35;
 constexpr std::uint64_t kLowHalf = 0xffffffffULL;
 
 class BoundaryFront {
@@ -223,22 +234,56 @@ class BoundaryFront {
         w.w = w.nx * a.x + w.ny * a.y;
         walls_.push_back(w);
       }
-      // Corner at vertex i + 1, between wall i (in) and wall i + 1 (out).
-      for (std::size_t i = 0; i < n; ++i) {
+      // Corner at vertex i + 1, between wall i (in) and wall i + 1 (out). The front starts at
+      // every corner sharper than kSlideTurn; along gentler ones the wall layer slides from one
+      // wall to the next (slide()), so a finely divided curve is not started at each of its
+      // vertices (the ring's sharpest vertex starts it if none is sharp).
+      ring_first_.push_back(static_cast<std::size_t>(first));
+      rough_.resize(walls_.size(), 0);
+      std::size_t sharpest = 0;
+      double sharpest_turn = -1;
+      bool started = false;
+      auto start_at = [&](std::size_t i, bool convex, std::int32_t v) {
         const std::int32_t in = -(first + static_cast<std::int32_t>(i) + 1);
         const std::int32_t out = -(first + static_cast<std::int32_t>((i + 1) % n) + 1);
-        const Wall& wi = walls_[wall_index(in)];
-        const Wall& wo = walls_[wall_index(out)];
-        const double turn = wi.tx * wo.ty - wi.ty * wo.tx;  // > 0: left turn, a convex corner
-        if (turn > 1e-12) {
+        if (convex) {
           push_gap(Gap{in, out});
         } else {
-          const auto v = static_cast<std::int32_t>(corners_.size());
-          corners_.push_back(Corner{wi.tx, wi.ty, wo.tx, wo.ty});
-          corner_at_.push_back(Point{wi.bx, wi.by});
           push_gap(Gap{in, v});
           push_gap(Gap{v, out});
         }
+        started = true;
+      };
+      std::vector<std::int32_t> vertex(n, kNone);  // the reflex vertex's node, per vertex
+      for (std::size_t i = 0; i < n; ++i) {
+        const Wall& wi = walls_[static_cast<std::size_t>(first) + i];
+        const Wall& wo = walls_[static_cast<std::size_t>(first) + (i + 1) % n];
+        const double cross = wi.tx * wo.ty - wi.ty * wo.tx;  // > 0: left turn, a convex corner
+        const double turn = std::abs(std::atan2(cross, wi.tx * wo.tx + wi.ty * wo.ty));
+        const bool convex = cross > 1e-12;
+        if (!convex) {
+          vertex[i] = static_cast<std::int32_t>(corners_.size());
+          corners_.push_back(Corner{wi.tx, wi.ty, wo.tx, wo.ty});
+          corner_at_.push_back(Point{wi.bx, wi.by});
+        }
+        if (turn >= kSlideTurn && wi.len < 2 * rmax_) {
+          rough_[static_cast<std::size_t>(first) + i] = 1;
+        }
+        if (turn >= kSlideTurn && wo.len < 2 * rmax_) {
+          rough_[static_cast<std::size_t>(first) + (i + 1) % n] = 1;
+        }
+        if (turn > sharpest_turn) {
+          sharpest_turn = turn;
+          sharpest = i;
+        }
+        if (turn >= kSlideTurn) {
+          start_at(i, convex, vertex[i]);
+        }
+      }
+      if (!started && n > 0) {
+        const Wall& wi = walls_[static_cast<std::size_t>(first) + sharpest];
+        const Wall& wo = walls_[static_cast<std::size_t>(first) + (sharpest + 1) % n];
+        start_at(sharpest, wi.tx * wo.ty - wi.ty * wo.tx > 1e-12, vertex[sharpest]);
       }
     };
     add_ring(req_.polygon->outer);
@@ -747,8 +792,8 @@ class BoundaryFront {
       }
     }
     if (k > 0) {
-      if (is_wall(g.a) || is_wall(g.b)) {
-        k += 32;  // wall voids: buckets 32.., tried first
+      if ((is_wall(g.a) && rough_[wall_index(g.a)] != 0) || (is_wall(g.b) && rough_[wall_index(g.b)] != 0)) {
+        k += 32;  // voids on a rough wall: buckets 32.., tried first
       }
       voids_[static_cast<std::size_t>(k)].push_back(g);
       mask_ |= 1ULL << static_cast<unsigned>(k);
@@ -813,6 +858,49 @@ class BoundaryFront {
   // ------------------------------------------------------------------------------------------
   // Placing a disk of radius r in gap g.
 
+  // The ring wall e belongs to.
+  [[nodiscard]] std::size_t ring_of(std::int32_t e) const noexcept {
+    const std::size_t i = wall_index(e);
+    return static_cast<std::size_t>(std::upper_bound(ring_first_.begin(), ring_first_.end(), i) - ring_first_.begin()) -
+           1;
+  }
+
+  // A candidate touching a wall and a node whose foot on the wall lies beyond the edge: along a
+  // gently turning boundary (a curve divided into many short edges) it touches the next wall
+  // instead. It is recomputed against the wall nearest to it, if that wall is on the same ring
+  // and turned by less than kSlideTurn from the first, a few times over; otherwise it is left as
+  // it is, for supported_by() to refuse.
+  void slide(std::int32_t& x, std::int32_t& y, double r, double& px, double& py) {
+    for (int k = 0; k < 4; ++k) {
+      if (is_wall(x) == is_wall(y)) {
+        return;
+      }
+      const bool wall_first = is_wall(x);
+      const std::int32_t w = wall_first ? x : y;
+      if (supported_by(w, px, py)) {
+        return;
+      }
+      double d2 = std::numeric_limits<double>::infinity();
+      const std::int32_t e = nearest_wall(px, py, d2);
+      if (e == kNone || e == w || ring_of(e) != ring_of(w)) {
+        return;
+      }
+      const Wall& a = walls_[wall_index(w)];
+      const Wall& b = walls_[wall_index(e)];
+      if (a.tx * b.tx + a.ty * b.ty < std::cos(kSlideTurn)) {
+        return;
+      }
+      double qx = 0;
+      double qy = 0;
+      if (!(wall_first ? tangent(e, y, r, qx, qy) : tangent(x, e, r, qx, qy))) {
+        return;
+      }
+      (wall_first ? x : y) = e;
+      px = qx;
+      py = qy;
+    }
+  }
+
   bool try_gap(Gap g, double r, bool in_void) {
     std::int32_t x = g.a;
     std::int32_t y = g.b;
@@ -825,6 +913,7 @@ class BoundaryFront {
     }
     const int moves = in_void ? kVoidMoves : kMoves;
     for (int move = 0; move <= moves; ++move) {
+      slide(x, y, r, px, py);
       if (!(px - r >= -clearance_ && px + r <= width_ + clearance_ && py - r >= -clearance_ &&
             py + r <= height_ + clearance_)) {
         return false;  // outside the polygon's box, so outside the polygon
@@ -919,7 +1008,9 @@ class BoundaryFront {
   std::vector<std::int32_t> head_cell_;
   std::vector<std::uint32_t> wall_begin_, fill_at_;
   std::vector<std::int32_t> wall_ids_;
-  std::vector<Bounds> tree_;  // the wall tree (build_wall_tree)
+  std::vector<Bounds> tree_;             // the wall tree (build_wall_tree)
+  std::vector<std::size_t> ring_first_;  // the first wall of each ring
+  std::vector<std::uint8_t> rough_;
   std::size_t leaves_ = 1;
 };
 
