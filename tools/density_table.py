@@ -12,6 +12,7 @@ default), from the shape's area as `frontpack info` prints it; the spec used is 
 
     python3 tools/density_table.py                       # the table on stdout
     python3 tools/density_table.py --out table.md        # ... into a file
+    python3 tools/density_table.py --methods boundary    # one method's rows only
     python3 tools/density_table.py --pictures            # docs/img/density-{closed,open,boundary}.png
 
 Python 3 standard library only. docs/density.md explains the measures and reads the table.
@@ -158,7 +159,7 @@ def fill(tool, shape_path, method, spec, seed, workdir, extra=()):
 
 def measure_row(tool, shape, method, spec, workdir):
     path = os.path.join(ROOT, "shapes", shape)
-    keys = ("disks", "overall", "interior", "band", "diff", "ks", "culled", "us_per_disk")
+    keys = ("disks", "overall", "interior", "band", "diff", "ks", "seg", "median_ratio", "rattlers", "culled", "us_per_disk")
     acc = {k: 0.0 for k in keys}
     for seed in SEEDS:
         j, _ = fill(tool, path, method, spec, seed, workdir)
@@ -169,27 +170,30 @@ def measure_row(tool, shape, method, spec, workdir):
         acc["band"] += j["band_fraction"]
         acc["diff"] += j["band_fraction"] - j["interior_fraction"]
         acc["ks"] += j["radius"]["ks_by_area"]
+        acc["seg"] += j["segregation_ks_by_area"]
+        acc["median_ratio"] += j["band_median_by_area"] / j["inside_median_by_area"]
+        acc["rattlers"] += j["rattlers"] / max(disks, 1)
         acc["culled"] += j["certificate"]["culled"]
         acc["us_per_disk"] += 1e6 * j["seconds"]["front"] / max(disks, 1)
     return {k: v / len(SEEDS) for k, v in acc.items()}
 
 
-def table(tool, shapes, disks, log):
+def table(tool, shapes, disks, methods, log):
     lines = [
-        "| shape | radius | method | disks | overall | interior | band | band - interior | KS by area | culled | front µs/disk |",
-        "|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|",
+        "| shape | radius | method | disks | overall | interior | band | band - interior | KS by area | segregation KS | band / inside median | rattlers | culled | front µs/disk |",
+        "|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|",
     ]
     with tempfile.TemporaryDirectory(prefix="density_table_") as workdir:
         for shape in shapes:
             spec = radius_spec(shape_area(tool, os.path.join(ROOT, "shapes", shape)), disks)
-            for method in METHODS:
+            for method in methods:
                 t0 = time.monotonic()
                 m = measure_row(tool, shape, method, spec, workdir)
                 log("%-22s %-9s %-28s %6.0f disks  %.1f s" % (shape, method, spec, m["disks"], time.monotonic() - t0))
                 lines.append(
-                    "| %s | `%s` | %s | %.0f | %.4f | %.4f | %.4f | %+.4f | %.4f | %.0f | %.2f |"
+                    "| %s | `%s` | %s | %.0f | %.4f | %.4f | %.4f | %+.4f | %.4f | %.3f | %.3f | %.3f | %.0f | %.2f |"
                     % (shape.removesuffix(".wkt"), spec, method, m["disks"], m["overall"], m["interior"],
-                       m["band"], m["diff"], m["ks"], m["culled"], m["us_per_disk"]))
+                       m["band"], m["diff"], m["ks"], m["seg"], m["median_ratio"], m["rattlers"], m["culled"], m["us_per_disk"]))
     return "\n".join(lines) + "\n"
 
 
@@ -216,6 +220,8 @@ def main():
     ap.add_argument("--out", help="write the table to this file (default: stdout)")
     ap.add_argument("--disks", type=int, default=40000, help="about this many disks per run (default 40000)")
     ap.add_argument("--shapes", nargs="*", help="these shapes (file names in shapes/) instead of every concave one")
+    ap.add_argument("--methods", nargs="*", choices=METHODS, default=list(METHODS),
+                    help="these methods only (default: all three)")
     ap.add_argument("--pictures", action="store_true",
                     help="write docs/img/density-{closed,open,boundary}.png (%s, %s, seed %d, %d px) and no table"
                     % (PICTURE_SHAPE, PICTURE_RADIUS, PICTURE_SEED, PICTURE_WIDTH))
@@ -237,7 +243,7 @@ def main():
 
     shapes = args.shapes if args.shapes else concave_shapes()
     t0 = time.monotonic()
-    text = table(tool, shapes, args.disks, log)
+    text = table(tool, shapes, args.disks, args.methods, log)
     log("total %.0f s" % (time.monotonic() - t0))
     if args.out:
         with open(args.out, "w") as f:
