@@ -63,7 +63,8 @@ namespace {
 
 constexpr std::int32_t kNone = std::numeric_limits<std::int32_t>::min();
 constexpr int kClasses = 24;             // void buckets (log-spaced radius classes)
-constexpr int kMoves = 3;                // alternatives tried per front gap (cases (b)-(d))
+constexpr int kMoves = 2;                // alternatives tried per front gap (cases (b)-(d))
+constexpr int kWallMoves = 3;            // and per gap on a wall or a reflex vertex
 constexpr int kVoidMoves = 1;            // and per void
 constexpr std::uint32_t kWallList = 16;  // a cell with more walls than this asks the wall tree
 constexpr std::size_t kLeafWalls = 4;    // walls per leaf of the wall tree
@@ -911,7 +912,7 @@ class BoundaryFront {
     if (!tangent(x, y, r, px, py)) {
       return false;
     }
-    const int moves = in_void ? kVoidMoves : kMoves;
+    const int moves = in_void ? kVoidMoves : (on_wall(x) || on_wall(y)) ? kWallMoves : kMoves;
     for (int move = 0; move <= moves; ++move) {
       slide(x, y, r, px, py);
       if (!(px - r >= -clearance_ && px + r <= width_ + clearance_ && py - r >= -clearance_ &&
