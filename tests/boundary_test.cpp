@@ -170,8 +170,6 @@ TEST(BoundaryDensity, AnnulusKsByAreaAtMost002) {
 }
 // The comb has no hole, but 16 reflex corners and teeth 0.1 wide (about 20 rmax).
 TEST(BoundaryDensity, CombInteriorAtLeast084) {
-  GTEST_SKIP() << "not met yet: measured interior fraction 0.8353 (41,937 disks, seed 1; mean of seeds 1-3 "
-                  "in docs/density.md: 0.8358)";
   expect_interior_target("comb.wkt");
 }
 TEST(BoundaryDensity, CombBandWithin002OfInterior) {
