@@ -192,6 +192,18 @@ class BoundaryFront {
         push_void(g, cls, blocker_);
       }
     }
+    // The front, the voids and the grid are done with: free them before the output grows (peak
+    // memory: the nodes and the output are then all that is left).
+    release(fifo_);
+    release(wall_fifo_);
+    for (auto& side : voids_) {
+      for (auto& bucket : side) {
+        release(bucket);
+      }
+    }
+    release(head_cell_);
+    release(wall_begin_);
+    release(wall_ids_);
     for (std::size_t i = corners_.size(); i < nodes_.size(); ++i) {
       out_.push_back(Disk{{origin_.x + nodes_[i].x, origin_.y + nodes_[i].y}, nodes_[i].r});
     }
@@ -199,6 +211,11 @@ class BoundaryFront {
   }
 
  private:
+  template <class T>
+  static void release(std::vector<T>& v) {
+    std::vector<T>().swap(v);
+  }
+
   [[nodiscard]] std::size_t placed() const noexcept { return nodes_.size() - corners_.size() + out_.size(); }
   [[nodiscard]] bool fifo_empty() const noexcept { return head_ == fifo_.size() && wall_head_ == wall_fifo_.size(); }
   [[nodiscard]] bool on_wall(std::int32_t e) const noexcept { return is_wall(e) || is_corner(e); }
