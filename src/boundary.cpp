@@ -42,9 +42,11 @@
 //
 // Containment. A candidate touching a placed disk lies inside the domain when it crosses no wall:
 // the two disks cover the segment between their centres. A candidate touching only walls and
-// vertices is checked directly: its foot on a wall must lie on the edge, and it must not lie in
-// the outside wedge of a reflex vertex. Walls are tested in floating point with half the clearance
-// to spare; the certifier decides containment exactly.
+// vertices is checked directly: its foot on a wall must lie on the edge, it must not lie in the
+// outside wedge of a reflex vertex, and its centre must be inside the polygon (where the domain is
+// thinner than the clearance, a spike whose two edges are a few ulps apart, it could otherwise
+// touch one edge from within and lie wholly beyond the other). Walls are tested in floating point with half the
+// clearance to spare; the certifier decides containment exactly.
 #include "boundary.hpp"
 
 #include <algorithm>
@@ -228,6 +230,9 @@ class BoundaryFront {
   }
   [[nodiscard]] static bool is_wall(std::int32_t e) noexcept { return e < 0; }
   [[nodiscard]] static std::size_t wall_index(std::int32_t e) noexcept { return static_cast<std::size_t>(-(e + 1)); }
+  [[nodiscard]] bool is_disk(std::int32_t e) const noexcept {
+    return e >= 0 && static_cast<std::size_t>(e) >= corners_.size();
+  }
   [[nodiscard]] bool is_corner(std::int32_t e) const noexcept {
     return e >= 0 && static_cast<std::size_t>(e) < corners_.size();
   }
@@ -880,13 +885,33 @@ class BoundaryFront {
     return deepest<true>(Probe{x, y, r, r + margin_ + band_, r + margin_ - band_}, kNone, kNone) == kNone;
   }
 
-  // Crossing number over all walls (floating point; a seed centre is far from every wall).
+  // Crossing number (floating point: the points asked about are seed centres and candidates that
+  // touch only walls, at least their radius from every wall).
   [[nodiscard]] bool inside_polygon(double x, double y) const noexcept {
+    // The walls whose boxes meet the ray from (x, y) to the right, from the wall tree.
     bool in = false;
-    for (const Wall& w : walls_) {
-      if ((w.ay > y) != (w.by > y)) {
-        const double xc = w.ax + (y - w.ay) * (w.bx - w.ax) / (w.by - w.ay);
-        in = in != (x < xc);
+    std::array<std::size_t, 128> stack{};
+    std::size_t top = 0;
+    stack[top++] = 1;
+    while (top > 0) {
+      const std::size_t k = stack[--top];
+      const Bounds& b = tree_[k];
+      if (!(b.ymin <= y && y <= b.ymax && x <= b.xmax)) {
+        continue;
+      }
+      if (k < leaves_) {
+        stack[top++] = 2 * k;
+        stack[top++] = 2 * k + 1;
+        continue;
+      }
+      const std::size_t first = (k - leaves_) * kLeafWalls;
+      const std::size_t last = std::min(first + kLeafWalls, walls_.size());
+      for (std::size_t e = first; e < last; ++e) {
+        const Wall& w = walls_[e];
+        if ((w.ay > y) != (w.by > y)) {
+          const double xc = w.ax + (y - w.ay) * (w.bx - w.ax) / (w.by - w.ay);
+          in = in != (x < xc);
+        }
       }
     }
     return in;
@@ -960,6 +985,13 @@ class BoundaryFront {
       const std::int32_t d = move == moves && move > 0 ? deepest<true>(p, x, y) : deepest(p, x, y);
       if (d == kNone) {
         if (!supported_by(x, px, py) || !supported_by(y, px, py)) {
+          return false;
+        }
+        // Touching a disk, a candidate that crosses no wall is inside: the two disks cover the
+        // segment between their centres. Touching only walls and reflex vertices, it can lie
+        // wholly outside where the domain is thinner than the clearance (a spike two edges a few
+        // ulps apart): its centre must then be inside.
+        if (!is_disk(x) && !is_disk(y) && !inside_polygon(px, py)) {
           return false;
         }
         const std::int32_t n = add_node(px, py, r);
