@@ -27,9 +27,13 @@ namespace {
 // memory and speeds the sweep; used when every coordinate fits a float), each rounded outwards so
 // that the exact box [x - r, x + r] x [y - r, y + r] lies inside it. A box's handle points at its
 // batch entry: the entry gives the disk, its position whether the disk is a guest.
+//
+// Far from the origin a float cannot tell nearby disks apart (at 8e9 its step is 1024): float boxes
+// are taken relative to `origin` (the smallest centre coordinates), widened by a bound on the
+// rounding of the two subtractions, so that they stay tight there too.
 template <class NT>
 void box_pass(std::span<const Disk> disks, const std::vector<std::uint32_t>& batch, std::size_t own,
-              std::vector<std::pair<std::size_t, std::size_t>>& out, std::size_t& candidates) {
+              std::vector<std::pair<std::size_t, std::size_t>>& out, std::size_t& candidates, Point origin) {
   using Box = CGAL::Box_intersection_d::Box_with_handle_d<NT, 2, const std::uint32_t*,
                                                           CGAL::Box_intersection_d::ID_FROM_HANDLE>;
   constexpr NT inf = std::numeric_limits<NT>::infinity();
@@ -39,10 +43,15 @@ void box_pass(std::span<const Disk> disks, const std::vector<std::uint32_t>& bat
   const auto up = [](double v) { return std::nextafter(static_cast<NT>(next_up(v)), inf); };
   std::vector<Box> boxes;
   boxes.reserve(batch.size());
+  // (c - r) - o rounds twice, each time by at most 2^-53 of a magnitude below |c| + r + |o|.
+  const auto err = [](double c, double r, double o) { return 0x1p-51 * (std::abs(c) + r + std::abs(o)); };
   for (const std::uint32_t& i : batch) {
     const Disk& d = disks[i];
-    NT lo[2] = {down(d.centre.x - d.radius), down(d.centre.y - d.radius)};
-    NT hi[2] = {up(d.centre.x + d.radius), up(d.centre.y + d.radius)};
+    const double x = d.centre.x;
+    const double y = d.centre.y;
+    const double r = d.radius;
+    NT lo[2] = {down(((x - r) - origin.x) - err(x, r, origin.x)), down(((y - r) - origin.y) - err(y, r, origin.y))};
+    NT hi[2] = {up(((x + r) - origin.x) + err(x, r, origin.x)), up(((y + r) - origin.y) + err(y, r, origin.y))};
     boxes.emplace_back(lo, hi, &i);
   }
   const std::uint32_t* guests = batch.data() + own;
@@ -174,9 +183,9 @@ void overlapping_pairs(std::span<const Disk> disks, std::vector<std::pair<std::s
       guest_tile(0, 1);
       guest_tile(1, 1);
       if (fits_float) {
-        box_pass<float>(disks, batch, own, out, candidates);
+        box_pass<float>(disks, batch, own, out, candidates, Point{all.xmin, all.ymin});
       } else {
-        box_pass<double>(disks, batch, own, out, candidates);
+        box_pass<double>(disks, batch, own, out, candidates, Point{0, 0});
       }
     }
   }

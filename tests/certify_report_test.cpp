@@ -66,3 +66,25 @@ TEST(CertifyReport, NonFiniteDiskIsInfinitelyFarOut) {
 }
 
 }  // namespace
+
+// Far from the origin (8e9, where a float's step is 1024) the overlap pass must still search only
+// neighbours: a 100 x 100 grid of touching disks, one pair overlapping by a few ulps of the
+// coordinates. Before boxes were taken relative to the disks' corner, every pair was a candidate
+// (about 50 million here).
+TEST(CertifyReport, FarFromTheOriginTheOverlapPassStaysLocal) {
+  const double o = 8e9;
+  const fp::Domain domain =
+      fp::Domain::from_wkt("POLYGON((8e9 8e9,8000000100 8e9,8000000100 8000000100,8e9 8000000100,8e9 8e9))");
+  std::vector<fp::Disk> disks;
+  for (int j = 0; j < 100; ++j) {
+    for (int i = 0; i < 100; ++i) {
+      disks.push_back({{o + 0.5 + i, o + 0.5 + j}, 0.5});  // neighbours touch: not overlapping
+    }
+  }
+  disks[5050].centre.x -= 0x1p-20;  // 1e-6: about 1000 ulps at 8e9, so its left neighbour overlaps
+  const fp::CertifyReport r = fp::certify(domain, disks);
+  ASSERT_EQ(r.overlapping.size(), 1u);
+  EXPECT_EQ(r.overlapping[0], (std::pair<std::size_t, std::size_t>{5049, 5050}));
+  EXPECT_TRUE(r.outside.empty());
+  EXPECT_LT(r.certificate.candidate_pairs, 10 * disks.size());
+}
