@@ -57,6 +57,7 @@
 #include <limits>
 #include <numbers>
 
+#include "cell_grid.hpp"
 #include "overlap.hpp"
 
 namespace frontpack::detail {
@@ -327,21 +328,8 @@ class BoundaryFront {
   // of it (a disk of radius <= rmax centred in the cell can only cross those).
 
   void setup_grid() {
-    cell_ = 2 * rmax_ * (1 + 1e-9);
-    const double pad = 4 * rmax_;
-    gx0_ = -pad;
-    gy0_ = -pad;
-    const double w = width_ + 2 * pad;
-    const double h = height_ + 2 * pad;
-    double side = cell_;
-    while ((w / side + 1) * (h / side + 1) > 16e6) {
-      side *= 2;
-    }
-    cell_ = side;
-    inv_cell_ = 1.0 / cell_;
-    gnx_ = static_cast<std::size_t>(w * inv_cell_) + 1;
-    gny_ = static_cast<std::size_t>(h * inv_cell_) + 1;
-    head_cell_.assign(gnx_ * gny_, kNone);
+    grid_ = CellGrid(0, 0, width_, height_, rmax_);
+    head_cell_.assign(grid_.cells(), kNone);
 
     for (std::size_t v = 0; v < corners_.size(); ++v) {
       add_node(corner_at_[v].x, corner_at_[v].y, 0);
@@ -349,7 +337,7 @@ class BoundaryFront {
 
     // Walls per cell (compressed rows): those meeting the cell grown by rmax + the clearance.
     const double reach = (rmax_ + clearance_) * (1 + 1e-9) + 4 * clearance_;
-    wall_begin_.assign(gnx_ * gny_ + 1, 0);
+    wall_begin_.assign(grid_.cells() + 1, 0);
     for (int pass = 0; pass < 2; ++pass) {
       for (std::size_t e = 0; e < walls_.size(); ++e) {
         const Wall& wl = walls_[e];
@@ -359,12 +347,12 @@ class BoundaryFront {
         const std::int64_t r1 = row(std::max(wl.ay, wl.by) + reach);
         for (std::int64_t j = r0; j <= r1; ++j) {
           for (std::int64_t i = c0; i <= c1; ++i) {
-            const double x0 = gx0_ + static_cast<double>(i) * cell_ - reach;
-            const double y0 = gy0_ + static_cast<double>(j) * cell_ - reach;
-            if (!segment_meets_box(wl, x0, y0, x0 + cell_ + 2 * reach, y0 + cell_ + 2 * reach)) {
+            const double x0 = grid_.x0 + static_cast<double>(i) * grid_.side - reach;
+            const double y0 = grid_.y0 + static_cast<double>(j) * grid_.side - reach;
+            if (!segment_meets_box(wl, x0, y0, x0 + grid_.side + 2 * reach, y0 + grid_.side + 2 * reach)) {
               continue;
             }
-            const std::size_t c = static_cast<std::size_t>(j) * gnx_ + static_cast<std::size_t>(i);
+            const std::size_t c = static_cast<std::size_t>(j) * grid_.nx + static_cast<std::size_t>(i);
             if (pass == 0) {
               ++wall_begin_[c + 1];
             } else {
@@ -374,7 +362,7 @@ class BoundaryFront {
         }
       }
       if (pass == 0) {
-        for (std::size_t c = 0; c < gnx_ * gny_; ++c) {
+        for (std::size_t c = 0; c < grid_.cells(); ++c) {
           wall_begin_[c + 1] += wall_begin_[c];
         }
         wall_ids_.assign(wall_begin_.back(), 0);
@@ -413,23 +401,9 @@ class BoundaryFront {
     return true;
   }
 
-  [[nodiscard]] std::int64_t col(double x) const noexcept {
-    const double g = (x - gx0_) * inv_cell_;
-    if (!(g > 0)) {
-      return 0;
-    }
-    return std::min(static_cast<std::int64_t>(g), static_cast<std::int64_t>(gnx_) - 1);
-  }
-  [[nodiscard]] std::int64_t row(double y) const noexcept {
-    const double g = (y - gy0_) * inv_cell_;
-    if (!(g > 0)) {
-      return 0;
-    }
-    return std::min(static_cast<std::int64_t>(g), static_cast<std::int64_t>(gny_) - 1);
-  }
-  [[nodiscard]] std::size_t cell_of(double x, double y) const noexcept {
-    return static_cast<std::size_t>(row(y)) * gnx_ + static_cast<std::size_t>(col(x));
-  }
+  [[nodiscard]] std::int64_t col(double x) const noexcept { return grid_.col(x); }
+  [[nodiscard]] std::int64_t row(double y) const noexcept { return grid_.row(y); }
+  [[nodiscard]] std::size_t cell_of(double x, double y) const noexcept { return grid_.cell_of(x, y); }
 
   std::int32_t add_node(double x, double y, double r) {
     const auto id = static_cast<std::int32_t>(nodes_.size());
@@ -448,26 +422,7 @@ class BoundaryFront {
     if (!is_wall(a) && !is_wall(b)) {
       const Node& an = nodes_[static_cast<std::size_t>(a)];
       const Node& bn = nodes_[static_cast<std::size_t>(b)];
-      const double ra = an.r + g;
-      const double rb = bn.r + g;
-      const double dx = bn.x - an.x;
-      const double dy = bn.y - an.y;
-      const double d2 = dx * dx + dy * dy;
-      if (!(d2 > 0)) {
-        return false;
-      }
-      const double inv_d = 1 / std::sqrt(d2);
-      const double t = (ra * ra - rb * rb + d2) * (0.5 * inv_d);
-      const double h2 = ra * ra - t * t;
-      if (!(h2 >= 0)) {
-        return false;
-      }
-      const double h = std::sqrt(h2);
-      const double ux = dx * inv_d;
-      const double uy = dy * inv_d;
-      px = an.x + t * ux - h * uy;
-      py = an.y + t * uy + h * ux;
-      return true;
+      return tangent_to_two(an.x, an.y, an.r + g, bn.x, bn.y, bn.r + g, /*left=*/true, px, py);
     }
     if (is_wall(a) && is_wall(b)) {
       // Where the two walls' lines, moved in by g, cross.
@@ -665,7 +620,7 @@ class BoundaryFront {
     const std::int64_t r1 = row(p.y + r_reach);
     const Node* const nodes = nodes_.data();
     for (std::int64_t j = r0; j <= r1; ++j) {
-      const std::int32_t* const heads = head_cell_.data() + static_cast<std::size_t>(j) * gnx_;
+      const std::int32_t* const heads = head_cell_.data() + static_cast<std::size_t>(j) * grid_.nx;
       for (std::int64_t i = c0; i <= c1; ++i) {
         for (std::int32_t d = heads[i]; d != kNone;) {
           const Node& o = nodes[d];
@@ -1072,8 +1027,7 @@ class BoundaryFront {
   std::array<std::array<std::vector<Gap>, kClasses>, 2> voids_;  // [1]: on a rough wall; [.][k]: class k
   std::array<std::array<std::uint64_t, kMaskWords>, 2> mask_{};  // bit k of mask_[s]: voids_[s][k] not empty
 
-  double cell_ = 1, inv_cell_ = 1, gx0_ = 0, gy0_ = 0;
-  std::size_t gnx_ = 1, gny_ = 1;
+  CellGrid grid_;
   std::vector<std::int32_t> head_cell_;
   std::vector<std::uint32_t> wall_begin_, fill_at_;
   std::vector<std::int32_t> wall_ids_;

@@ -23,6 +23,7 @@
 #include <limits>
 #include <numbers>
 
+#include "cell_grid.hpp"
 #include "overlap.hpp"
 
 namespace frontpack::detail {
@@ -189,43 +190,13 @@ class Front {
   }
 
   void setup_grid() {
-    // Two disks that overlap have centres closer than 2 rmax; with cells a hair wider than that,
-    // their cells differ by at most one in each direction even after rounding.
-    cell_ = 2 * rmax_ * (1 + 1e-9);
-    const double margin = 4 * rmax_;
-    gx0_ = box_.xmin - margin;
-    gy0_ = box_.ymin - margin;
-    const double w = box_.width() + 2 * margin;
-    const double h = box_.height() + 2 * margin;
-    // Keep the grid within memory for absurd aspect ratios: at most ~16M cells.
-    double side = cell_;
-    while ((w / side + 1) * (h / side + 1) > 16e6) {
-      side *= 2;
-    }
-    cell_ = side;
-    inv_cell_ = 1.0 / cell_;
-    gnx_ = static_cast<std::size_t>(w * inv_cell_) + 1;
-    gny_ = static_cast<std::size_t>(h * inv_cell_) + 1;
-    head_.assign(gnx_ * gny_, kNone);
+    grid_ = CellGrid(box_.xmin, box_.ymin, box_.width(), box_.height(), rmax_);
+    head_.assign(grid_.cells(), kNone);
   }
 
-  [[nodiscard]] std::int64_t col(double x) const noexcept {
-    const double g = (x - gx0_) * inv_cell_;
-    if (!(g > 0)) {
-      return 0;
-    }
-    return std::min(static_cast<std::int64_t>(g), static_cast<std::int64_t>(gnx_) - 1);
-  }
-  [[nodiscard]] std::int64_t row(double y) const noexcept {
-    const double g = (y - gy0_) * inv_cell_;
-    if (!(g > 0)) {
-      return 0;
-    }
-    return std::min(static_cast<std::int64_t>(g), static_cast<std::int64_t>(gny_) - 1);
-  }
-  [[nodiscard]] std::size_t cell_of(double x, double y) const noexcept {
-    return static_cast<std::size_t>(row(y)) * gnx_ + static_cast<std::size_t>(col(x));
-  }
+  [[nodiscard]] std::int64_t col(double x) const noexcept { return grid_.col(x); }
+  [[nodiscard]] std::int64_t row(double y) const noexcept { return grid_.row(y); }
+  [[nodiscard]] std::size_t cell_of(double x, double y) const noexcept { return grid_.cell_of(x, y); }
 
   // A candidate disk with its band limits precomputed: the overlap test runs ~25 times per disk.
   struct Probe {
@@ -297,7 +268,7 @@ class Front {
     const std::int64_t r1 = row(y + reach);
     const Node* const nodes = nodes_.data();
     for (std::int64_t j = r0; j <= r1; ++j) {
-      const std::int32_t* const heads = head_.data() + static_cast<std::size_t>(j) * gnx_;
+      const std::int32_t* const heads = head_.data() + static_cast<std::size_t>(j) * grid_.nx;
       for (std::int64_t i = c0; i <= c1; ++i) {
         for (std::int32_t d = heads[i]; d != kNone;) {
           const Node& o = nodes[d];
@@ -335,26 +306,8 @@ class Front {
     if (!is_wall(c) && !is_wall(n)) {
       const Node& cn = nodes_[static_cast<std::size_t>(c)];
       const Node& nn = nodes_[static_cast<std::size_t>(n)];
-      const double a = cn.r + gap;
-      const double b = nn.r + gap;
-      const double dx = nn.x - cn.x;
-      const double dy = nn.y - cn.y;
-      const double d2 = dx * dx + dy * dy;
-      if (!(d2 > 0)) {
-        return false;
-      }
-      const double inv_d = 1 / std::sqrt(d2);  // one division instead of three
-      const double t = (a * a - b * b + d2) * (0.5 * inv_d);
-      const double h2 = a * a - t * t;
-      if (!(h2 >= 0)) {
-        return false;  // the two disks are too far apart for one of radius r to touch both
-      }
-      const double h = left ? std::sqrt(h2) : -std::sqrt(h2);  // left (open) or right (closed)
-      const double ux = dx * inv_d;
-      const double uy = dy * inv_d;
-      px = cn.x + t * ux - h * uy;
-      py = cn.y + t * uy + h * ux;
-      return true;
+      // Left (open form) or right (closed form) of c -> n.
+      return tangent_to_two(cn.x, cn.y, cn.r + gap, nn.x, nn.y, nn.r + gap, left, px, py);
     }
     if (is_wall(c) && is_wall(n)) {
       // A corner of two walls (Sec. 3: D1 in the corner of Bl and Bb).
@@ -785,8 +738,7 @@ class Front {
   std::size_t active_ = 0;
   std::size_t front_size_ = 0;
 
-  double cell_ = 1, inv_cell_ = 1, gx0_ = 0, gy0_ = 0;
-  std::size_t gnx_ = 1, gny_ = 1;
+  CellGrid grid_;
   std::vector<std::int32_t> head_;
 
   struct VoidSeg {

@@ -1,0 +1,81 @@
+// What the two generators (front.cpp, boundary.cpp) share: the uniform grid their neighbour
+// searches run on, and the position of a disk touching two others. Header-only and CGAL-free:
+// both are hot loops.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+
+namespace frontpack::detail {
+
+/// Square cells over the box [xmin, xmin + w] x [ymin, ymin + h] grown by 4 rmax on every side.
+/// The cells are a hair wider than 2 rmax, so that two disks of radius <= rmax that overlap have
+/// their centres in the same or neighbouring cells even after rounding; for absurd aspect ratios
+/// the side doubles until there are at most about 16M cells. Points outside map to the border
+/// cells (col() and row() clamp).
+struct CellGrid {
+  double x0 = 0, y0 = 0;  // lower-left corner
+  double side = 1, inv_side = 1;
+  std::size_t nx = 1, ny = 1;
+
+  CellGrid() = default;
+  CellGrid(double xmin, double ymin, double w, double h, double rmax) {
+    const double margin = 4 * rmax;
+    x0 = xmin - margin;
+    y0 = ymin - margin;
+    const double gw = w + 2 * margin;
+    const double gh = h + 2 * margin;
+    side = 2 * rmax * (1 + 1e-9);
+    while ((gw / side + 1) * (gh / side + 1) > 16e6) {
+      side *= 2;
+    }
+    inv_side = 1.0 / side;
+    nx = static_cast<std::size_t>(gw * inv_side) + 1;
+    ny = static_cast<std::size_t>(gh * inv_side) + 1;
+  }
+
+  [[nodiscard]] std::size_t cells() const noexcept { return nx * ny; }
+  [[nodiscard]] std::int64_t col(double x) const noexcept { return clamp((x - x0) * inv_side, nx); }
+  [[nodiscard]] std::int64_t row(double y) const noexcept { return clamp((y - y0) * inv_side, ny); }
+  [[nodiscard]] std::size_t cell_of(double x, double y) const noexcept {
+    return static_cast<std::size_t>(row(y)) * nx + static_cast<std::size_t>(col(x));
+  }
+
+ private:
+  static std::int64_t clamp(double g, std::size_t n) noexcept {
+    if (!(g > 0)) {
+      return 0;  // also NaN
+    }
+    return std::min(static_cast<std::int64_t>(g), static_cast<std::int64_t>(n) - 1);
+  }
+};
+
+/// The centre (px, py) of a disk touching two disks from outside: at distance ra from (ax, ay) and
+/// rb from (bx, by) (their radii plus the new one's, and the clearance), on the left of a -> b if
+/// `left`, else on the right. False if there is none (the disks are too far apart or one holds
+/// the other), or if the centres coincide.
+inline bool tangent_to_two(double ax, double ay, double ra, double bx, double by, double rb, bool left, double& px,
+                           double& py) noexcept {
+  const double dx = bx - ax;
+  const double dy = by - ay;
+  const double d2 = dx * dx + dy * dy;
+  if (!(d2 > 0)) {
+    return false;
+  }
+  const double inv_d = 1 / std::sqrt(d2);  // one division instead of three
+  const double t = (ra * ra - rb * rb + d2) * (0.5 * inv_d);
+  const double h2 = ra * ra - t * t;
+  if (!(h2 >= 0)) {
+    return false;
+  }
+  const double h = left ? std::sqrt(h2) : -std::sqrt(h2);
+  const double ux = dx * inv_d;
+  const double uy = dy * inv_d;
+  px = ax + t * ux - h * uy;
+  py = ay + t * uy + h * ux;
+  return true;
+}
+
+}  // namespace frontpack::detail
