@@ -27,4 +27,22 @@ inline std::vector<std::filesystem::path> shape_files() {
   return files;
 }
 
+/// The file names of shapes/*.wkt, sorted: the parameters of the tests that run on every shape.
+inline std::vector<std::string> shape_names() {
+  std::vector<std::string> names;
+  for (const auto& file : shape_files()) {
+    names.push_back(file.filename().string());
+  }
+  return names;
+}
+
+/// The name of a per-shape test: the shape's file name without ".wkt".
+struct ShapeTestName {
+  template <class ParamInfo>
+  std::string operator()(const ParamInfo& info) const {
+    const std::string& name = info.param;
+    return name.substr(0, name.find('.'));
+  }
+};
+
 }  // namespace frontpack::test
