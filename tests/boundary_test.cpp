@@ -237,6 +237,19 @@ fp::Domain hundred_thousand_vertex_ring() {
 
 }  // namespace
 
+// Found by the fill fuzzer: a hole 9e-16 from a reflex corner's wall, far thinner than the
+// clearance. A disk touching one of the two walls could lie wholly beyond the other, and the front
+// then grew outside the domain (616 of 2,418 disks culled); now nothing is, and the L (area 0.71)
+// holds 1,803 disks of radius 0.01 (0.80 of its area).
+TEST(BoundaryHostile, HoleCloserThanTheClearanceToAWall) {
+  const fp::Domain d = fp::Domain::from_wkt(
+      "POLYGON((0 0,1 0,1 0.5,0.5 0.5,0.5 1,0 1,0 0),"
+      "(0.3 0.6,0.4999999999999991 0.6,0.4999999999999991 0.8,0.3 0.8,0.3 0.6))");
+  const fp::Packing p = fill(d, fp::Method::boundary, fp::Radii::constant(0.01), 1);
+  expect_certified(d, p);
+  EXPECT_GT(p.disks.size(), 1700U);
+}
+
 // A smooth 100,000-vertex circle of radius 10: every cell along it holds hundreds of walls, so
 // the overlap test asks the wall tree for the nearest one. Every vertex is a (nearly flat) corner
 // where the front starts; the band must still pack.

@@ -14,10 +14,13 @@ namespace frontpack::fuzz {
 /// trip unchanged, and answers point queries.
 void wkt(const std::uint8_t* data, std::size_t size);
 
-/// fill() on a small domain and radius request decoded from the bytes (random rings and holes,
-/// scales from 1e-9 to 1e9, offsets up to 1e9, radius ratios up to 1000, both forms, any window):
-/// it returns or throws frontpack::Error; a returned packing certifies exactly (0 overlapping
-/// pairs, 0 disks outside, checked by an independent certify() call) and is reproducible.
+/// fill() on a small domain and radius request decoded from the bytes (random rings and holes, or
+/// shapes aimed at the boundary method: jagged rings, short edges, spikes, near-touching holes,
+/// slivers, combs; scales from 1e-9 to 1e9, offsets up to 1e9, radius ratios up to 1000; the
+/// closed, open and boundary methods, any window, voids on or off): it returns or throws
+/// frontpack::Error; a returned packing certifies exactly (0 overlapping pairs, 0 disks outside,
+/// checked by an independent certify() call), is reproducible, and with the boundary method has
+/// nothing culled.
 void fill(const std::uint8_t* data, std::size_t size);
 
 /// read_csv and read_yade on arbitrary text: each accepts or throws frontpack::Error; accepted
