@@ -1,40 +1,40 @@
 // The boundary-conforming advancing front (boundary.hpp).
 //
-// Elements. A new disk is always placed tangent to two elements: placed disks, walls (the
-// polygon's edges, the open form's infinite-radius disks generalised to segments) and reflex
-// vertices (zero-radius obstacles at the corners where the domain turns away). Element ids: a
-// node (disk or reflex vertex) is >= 0, wall e is -(e + 1).
+// Elements. A new disk is always placed tangent to two elements: placed disks, walls (the polygon's
+// edges, the open form's infinite-radius disks generalised to segments) and reflex vertices
+// (zero-radius obstacles at the corners where the domain turns away). Element ids: a node (disk or
+// reflex vertex) is >= 0, wall e is -(e + 1).
 //
 // Gaps. The front is kept as its segments alone, without the list that links them: a gap (a, b)
-// says "a disk may touch a and b, on the left of a -> b", the left being the free side (every
-// ring of a normalised polygon has the domain on its left). The initial gaps are the corners of
-// every ring: (e_in, e_out) at a convex corner, (e_in, v) and (v, e_out) at a reflex vertex v,
-// where the boundary turns by at least kSlideTurn (20 degrees). A vertex where it turns less is
-// no corner but a bend in a wall: a disk touching a wall whose foot falls past the wall's end
-// slides onto the next wall across such bends (slide()), so that a curve divided into many short
-// edges gets one wall layer along it, not one start per vertex (a ring without a corner starts at
-// its sharpest vertex). A
-// disk n placed in gap (a, b) replaces it with (a, n) and (n, b), exactly as the paper's front
-// replaces segment a -> b by a -> n -> b. Gaps are taken first in, first out, so the front moves
-// inwards layer by layer from every ring at once, and fronts that meet need no merging: a
+// says "a disk may touch a and b, on the left of a -> b", the left being the free side (every ring
+// of a normalised polygon has the domain on its left). The initial gaps are the corners of every
+// ring: (e_in, e_out) at a convex corner, (e_in, v) and (v, e_out) at a reflex vertex v, where the
+// boundary turns by at least kSlideTurn (20 degrees). A vertex where it turns less is no corner but
+// a bend in a wall: a disk touching a wall whose foot falls past the wall's end slides onto the
+// next wall across such bends (slide()), so that a curve divided into many short edges gets one
+// wall layer along it, not one start per vertex (a ring without a corner starts at its sharpest
+// vertex). A disk n placed in gap (a, b) replaces it with (a, n) and (n, b), exactly as the paper's
+// front replaces segment a -> b by a -> n -> b. Gaps are taken first in, first out, so the front
+// moves inwards layer by layer from every ring at once, and fronts that meet need no merging: a
 // candidate that overlaps an element d of the other front is moved to touch d and one of its
 // parents instead (the paper's cases (b)-(d), decided by geometry instead of list order), which
 // closes the seam with tangent disks.
 //
-// Voids. A gap where the drawn disk does not fit is not thrown away: it is kept in a bucket by
-// the most it can take (log-spaced radius classes between rmin and rmax): the radius that failed
-// there, or less, the radius of the pocket between its two elements and the element in the way
-// (pocket(): Apollonius' problem for three disks, or two disks and a wall). The cusps behind each
-// new disk (between it, a wall it touches and its other parent; or between two parents that do
-// not touch) are kept the same way. Each new radius is tried first in the voids, those on a rough
-// wall first, in the tightest class whose radii all exceed it, then on the front. A rough wall is
-// an edge shorter than 2 rmax that meets a corner: the crevices of a boundary rough at the scale
-// of the disks take only the small ones, and without the priority these would go to the more
-// recent voids inside and leave the band sparse. (On smooth walls the priority overfills the band
-// with small disks: it is then denser than the interior, and the interior sparser.) Every drawn radius is placed where
-// it fits, so the size distribution is the requested one; the run ends when the front is done and no void can take the
-// radius drawn. A void that fails again moves to a smaller class; one that can take nothing is dropped, so every gap is
-// tried a bounded number of times and the run ends.
+// Voids. A gap where the drawn disk does not fit is not thrown away: it is kept in a bucket by the
+// most it can take (log-spaced radius classes between rmin and rmax): the radius that failed there,
+// or less, the radius of the pocket between its two elements and the element in the way (pocket():
+// Apollonius' problem for three disks, or two disks and a wall). The cusps behind each new disk
+// (between it, a wall it touches and its other parent; or between two parents that do not touch)
+// are kept the same way. Each new radius is tried first in the voids, those on a rough wall first,
+// in the tightest class whose radii all exceed it, then on the front. A rough wall is an edge
+// shorter than 2 rmax that meets a corner: the crevices of a boundary rough at the scale of the
+// disks take only the small ones, and without the priority these would go to the more recent voids
+// inside and leave the band sparse. (On smooth walls the priority overfills the band with small
+// disks: it is then denser than the interior, and the interior sparser.) Every drawn radius is
+// placed where it fits, so the size distribution is the requested one; the run ends when the front
+// is done and no void can take the radius drawn. A void that fails again moves to a smaller class;
+// one that can take nothing is dropped, so every gap is tried a bounded number of times and the run
+// ends.
 //
 // Order. Gaps on a wall or a reflex vertex are taken before the others, so the first layer along
 // every wall is laid (from every corner) before the interior fronts arrive; without that, fronts
@@ -45,8 +45,8 @@
 // vertices is checked directly: its foot on a wall must lie on the edge, it must not lie in the
 // outside wedge of a reflex vertex, and its centre must be inside the polygon (where the domain is
 // thinner than the clearance, a spike whose two edges are a few ulps apart, it could otherwise
-// touch one edge from within and lie wholly beyond the other). Walls are tested in floating point with half the
-// clearance to spare; the certifier decides containment exactly.
+// touch one edge from within and lie wholly beyond the other). Walls are tested in floating point
+// with half the clearance to spare; the certifier decides containment exactly.
 #include "boundary.hpp"
 
 #include <algorithm>
@@ -214,11 +214,6 @@ class BoundaryFront {
   }
 
  private:
-  template <class T>
-  static void release(std::vector<T>& v) {
-    std::vector<T>().swap(v);
-  }
-
   [[nodiscard]] std::size_t placed() const noexcept { return nodes_.size() - corners_.size() + out_.size(); }
   [[nodiscard]] bool fifo_empty() const noexcept { return head_ == fifo_.size() && wall_head_ == wall_fifo_.size(); }
   [[nodiscard]] bool on_wall(std::int32_t e) const noexcept { return is_wall(e) || is_corner(e); }

@@ -1,5 +1,5 @@
 // What the two generators (front.cpp, boundary.cpp) share: the uniform grid their neighbour
-// searches run on, and the position of a disk touching two others. Header-only and CGAL-free:
+// searches run on, the position of a disk touching two others, and freeing their arrays. Header-only and CGAL-free:
 // both are hot loops.
 #pragma once
 
@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <vector>
 
 namespace frontpack::detail {
 
@@ -76,6 +77,13 @@ inline bool tangent_to_two(double ax, double ay, double ra, double bx, double by
   px = ax + t * ux - h * uy;
   py = ay + t * uy + h * ux;
   return true;
+}
+
+/// Frees a vector's memory (clear() keeps it): the generators free their working arrays before
+/// copying the disks out, so that the peak holds the disks and the output only.
+template <class T>
+void release(std::vector<T>& v) {
+  std::vector<T>().swap(v);
 }
 
 }  // namespace frontpack::detail

@@ -159,11 +159,6 @@ class Front {
   }
 
  private:
-  template <class T>
-  static void release(std::vector<T>& v) {
-    std::vector<T>().swap(v);
-  }
-
   // ------------------------------------------------------------------------------------------
   // Nodes, the grid over placed disks.
 
