@@ -205,6 +205,13 @@ class Validator {
     std::optional<Point> where;
   };
 
+  // Whether a problem on edges e and f of this rank would be reported before the one kept: the
+  // callers build the message only then (a degenerate ring can have millions of problem pairs).
+  [[nodiscard]] bool improves(std::uint32_t e, std::uint32_t f, int rank = 1) const {
+    return !problem_ ||
+           std::tuple<int, std::uint32_t, std::uint32_t>{rank, std::min(e, f), std::max(e, f)} < problem_->key;
+  }
+
   // rank 0 is reported before rank 1 (a spike names its cause better than the touches it makes).
   void report(std::uint32_t e, std::uint32_t f, Kind kind, std::string detail, std::optional<Point> where,
               int rank = 1) {
@@ -253,7 +260,7 @@ class Validator {
       const Point s = e_first ? B : A;
       const Point q = e_first ? D : B;
       const std::uint32_t at = e_first ? f : e;
-      if (orientation(p, s, q) == 0 && dot_sign(s, p, q) > 0) {
+      if (orientation(p, s, q) == 0 && dot_sign(s, p, q) > 0 && improves(e, f, 0)) {
         report(e, f, Kind::self_intersection,
                name(re) + ": " + edge(e) + " and " + edge(f) + " fold back on each other at " + vertex(at) +
                    " (a zero-width spike)",
@@ -281,8 +288,10 @@ class Validator {
       }
       if (lo < hi) {
         if (same_ring) {
-          report(e, f, Kind::self_intersection, name(re) + ": " + edge(e) + " and " + edge(f) + " overlap", {});
-        } else {
+          if (improves(e, f)) {
+            report(e, f, Kind::self_intersection, name(re) + ": " + edge(e) + " and " + edge(f) + " overlap", {});
+          }
+        } else if (improves(e, f)) {
           report(e, f, Kind::rings_overlap,
                  name(re) + " and " + name(rf) + " share a segment: " + edge(e) + " of the first overlaps " + edge(f) +
                      " of the second",
@@ -298,6 +307,9 @@ class Validator {
     const int o3 = orientation(C, D, A);
     const int o4 = orientation(C, D, B);
     if (o1 * o2 < 0 && o3 * o4 < 0) {
+      if (!improves(e, f)) {
+        return;
+      }
       const auto x =
           CGAL::intersection(Kernel::Segment_2(to_cgal(A), to_cgal(B)), Kernel::Segment_2(to_cgal(C), to_cgal(D)));
       std::optional<Point> at;
@@ -337,6 +349,9 @@ class Validator {
     const std::uint32_t rf = rs_.ring_of[f];
     if (re == rf) {
       // OGC: a ring must be simple; touching itself (even at a vertex) is a self-intersection.
+      if (!improves(e, f)) {
+        return;
+      }
       report(e, f, Kind::self_intersection,
              name(re) + ": " + edge(e) + " and " + edge(f) + " touch at " + format_point(t) +
                  " (a ring may not touch itself)",
