@@ -100,11 +100,7 @@ class BoundaryFront {
 
  public:
   BoundaryFront(const BoundaryRequest& req, Rng& rng, std::vector<Disk>& out, FillStats& stats)
-      : req_(req),
-        rng_(rng),
-        out_(out),
-        stats_(stats),
-        budget_(req.max_disks == 0 ? std::numeric_limits<std::size_t>::max() : req.max_disks) {
+      : req_(req), rng_(rng), out_(out), stats_(stats), control_(req.max_disks, req.tick) {
     Box box;
     for (const Point& p : req.polygon->outer) {
       box.extend(p);
@@ -135,18 +131,9 @@ class BoundaryFront {
   FrontResult run() {
     FrontResult result;
     double r = draw();
-    std::size_t last_tick = 0;
     for (;;) {
-      if (placed() >= budget_) {
-        result.truncated = true;
+      if (control_.stop(placed(), area_, result)) {
         break;
-      }
-      if (req_.tick && placed() - last_tick >= tick_every_) {
-        last_tick = placed();
-        if (!req_.tick(placed(), area_)) {
-          result.cancelled = true;
-          break;
-        }
       }
       const int cls = class_of(r);
       Gap g{kNone, kNone};
@@ -999,8 +986,7 @@ class BoundaryFront {
   Rng& rng_;
   std::vector<Disk>& out_;
   FillStats& stats_;
-  std::size_t budget_;
-  std::size_t tick_every_ = 1 << 14;
+  RunControl control_;
   Point origin_;
   double width_ = 0, height_ = 0;
   double rmin_ = 0, rmax_ = 0, clearance_ = 0, margin_ = 0, band_ = 0;

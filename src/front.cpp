@@ -55,11 +55,7 @@ class Front {
 
  public:
   Front(const FrontRequest& req, Rng& rng, std::vector<Disk>& out, FillStats& stats)
-      : req_(req),
-        rng_(rng),
-        out_(out),
-        stats_(stats),
-        budget_(req.max_disks == 0 ? std::numeric_limits<std::size_t>::max() : req.max_disks) {
+      : req_(req), rng_(rng), out_(out), stats_(stats), control_(req.max_disks, req.tick) {
     // Work in coordinates local to the box's lower-left corner, so that a translated domain
     // gives the same computation (and small numbers for domains far from the origin).
     origin_ = Point{req.box.xmin, req.box.ymin};
@@ -101,18 +97,9 @@ class Front {
     }
     double r = draw();
     std::size_t skips = 0;
-    std::size_t last_tick = 0;
     while (active_ > 0 && skips <= front_size_ + 1) {
-      if (placed() >= budget_) {
-        result.truncated = true;
+      if (control_.stop(placed(), area_, result)) {
         break;
-      }
-      if (req_.tick && placed() - last_tick >= tick_every_) {
-        last_tick = placed();
-        if (!req_.tick(placed(), area_)) {
-          result.cancelled = true;
-          break;
-        }
       }
       if (!segment_active(cur)) {
         cur = advance(cur);
@@ -720,8 +707,7 @@ class Front {
   double margin_ = 0;
   double band_ = 0;
   std::size_t window_ = 5;
-  std::size_t budget_;
-  std::size_t tick_every_ = 1 << 14;
+  RunControl control_;
   double area_ = 0;  // sum of r^2 over the disks placed, for progress reports
   double ox_ = 0;
   double oy_ = 0;

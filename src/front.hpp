@@ -32,6 +32,37 @@ struct FrontResult {
   bool cancelled = false;
 };
 
+/// What both generators check before each disk: the disk budget (max_disks, 0 = none) and the
+/// progress callback, called every 2^14 disks, which may cancel. Keeps a reference to `tick`.
+class RunControl {
+ public:
+  RunControl(std::size_t max_disks, const std::function<bool(std::size_t, double)>& tick)
+      : budget_(max_disks == 0 ? static_cast<std::size_t>(-1) : max_disks), tick_(tick) {}
+
+  /// Whether to stop before placing another disk, `placed` disks having been generated in total
+  /// and `area` being the sum of r^2 over this call's; `result` says why.
+  bool stop(std::size_t placed, double area, FrontResult& result) {
+    if (placed >= budget_) {
+      result.truncated = true;
+      return true;
+    }
+    if (tick_ && placed - last_tick_ >= kTickEvery) {
+      last_tick_ = placed;
+      if (!tick_(placed, area)) {
+        result.cancelled = true;
+        return true;
+      }
+    }
+    return false;
+  }
+
+ private:
+  static constexpr std::size_t kTickEvery = std::size_t{1} << 14;
+  std::size_t budget_;
+  const std::function<bool(std::size_t, double)>& tick_;
+  std::size_t last_tick_ = 0;
+};
+
 /// Estimated number of disks that fill `box` with radii from `radii` (a dense random packing).
 [[nodiscard]] double estimate_disks(const Box& box, const RadiusDistribution& radii);
 
