@@ -18,22 +18,8 @@ namespace fp = frontpack;
 
 namespace {
 
-fp::Packing fill(const fp::Domain& d, fp::Method m, fp::Radii radii, std::uint64_t seed = 1) {
-  fp::FillOptions o;
-  o.method = m;
-  o.radii = std::move(radii);
-  o.seed = seed;
-  return fp::fill(d, o);
-}
-
-// The packing is certified by fill() and again by an independent certify() call.
-void expect_certified(const fp::Domain& d, const fp::Packing& p) {
-  EXPECT_TRUE(p.certificate.exact);
-  EXPECT_EQ(p.certificate.dropped, 0U);
-  const fp::CertifyReport again = fp::certify(d, p.disks);
-  EXPECT_TRUE(again.overlapping.empty()) << again.overlapping.size() << " overlapping pairs";
-  EXPECT_TRUE(again.outside.empty()) << again.outside.size() << " disks outside";
-}
+using fp::test::expect_certified;
+using fp::test::fill;
 
 double fraction(const fp::Domain& d, const fp::Packing& p) {
   double a = 0;

@@ -1,10 +1,16 @@
 // Helpers shared by the tests.
 #pragma once
 
+#include <gtest/gtest.h>
+
 #include <algorithm>
+#include <cstdint>
 #include <filesystem>
 #include <string>
+#include <utility>
 #include <vector>
+
+#include "frontpack/frontpack.hpp"
 
 namespace frontpack::test {
 
@@ -25,6 +31,25 @@ inline std::vector<std::filesystem::path> shape_files() {
   }
   std::sort(files.begin(), files.end());
   return files;
+}
+
+/// fill() with this method, radii and seed, the other options at their defaults.
+inline Packing fill(const Domain& d, Method m, Radii radii, std::uint64_t seed = 1) {
+  FillOptions o;
+  o.method = m;
+  o.radii = std::move(radii);
+  o.seed = seed;
+  return frontpack::fill(d, o);
+}
+
+/// The packing fill() certified: decided exactly, nothing dropped, and an independent certify()
+/// call on the disks finds no overlapping pair and no disk outside.
+inline void expect_certified(const Domain& d, const Packing& p) {
+  EXPECT_TRUE(p.certificate.exact);
+  EXPECT_EQ(p.certificate.dropped, 0U) << "the generator itself produced an overlap";
+  const CertifyReport again = certify(d, p.disks);
+  EXPECT_TRUE(again.overlapping.empty()) << again.overlapping.size() << " overlapping pairs";
+  EXPECT_TRUE(again.outside.empty()) << again.outside.size() << " disks outside";
 }
 
 /// The file names of shapes/*.wkt, sorted: the parameters of the tests that run on every shape.
