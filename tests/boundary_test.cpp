@@ -211,23 +211,6 @@ TEST(BoundaryHostile, SpikeAThousandTimesLongerThanTheDomain) {
   EXPECT_GT(p.disks.size(), 100U);
 }
 
-// A 100,000-vertex star-shaped ring (radius 10 with radial noise), as in tests/hostile_test.cpp:
-// the per-vertex noise makes the boundary a saw with teeth up to 0.12 deep and 0.0006 apart.
-namespace {
-
-fp::Domain hundred_thousand_vertex_ring() {
-  std::vector<fp::Point> ring;
-  const int n = 100'000;
-  for (int k = 0; k < n; ++k) {
-    const double t = 2 * std::numbers::pi * k / n;
-    const double rho = 10 + 0.3 * std::sin(37 * t) + 0.01 * ((k * 7919) % 13);
-    ring.push_back({rho * std::cos(t), rho * std::sin(t)});
-  }
-  return fp::Domain::from_rings(ring);
-}
-
-}  // namespace
-
 // Found by the fill fuzzer: a hole 9e-16 from a reflex corner's wall, far thinner than the
 // clearance. A disk touching one of the two walls could lie wholly beyond the other, and the front
 // then grew outside the domain (616 of 2,418 disks culled); now nothing is, and the L (area 0.71)
@@ -267,7 +250,7 @@ TEST(BoundaryHostile, SmoothHundredThousandVertexCircle) {
 // The ring's inside is a disk of radius about 9.7: the closed form puts 7,414 disks in it. The saw
 // is rougher than the smallest disk, so the boundary method cannot start its front on the walls.
 TEST(BoundaryHostile, HundredThousandVertexRingIsFilled) {
-  const fp::Domain d = hundred_thousand_vertex_ring();
+  const fp::Domain d = fp::test::hundred_thousand_vertex_ring();
   ASSERT_EQ(d.num_vertices(), 100'000U);
   const fp::Packing p = fill(d, fp::Method::boundary, fp::Radii::uniform(0.05, 0.15), 1);
   expect_certified(d, p);

@@ -103,14 +103,7 @@ TEST(Hostile, HoleTouchingTheOuterRingAtAPoint) {
 
 // A 100,000-vertex star-shaped ring (radius 10 with radial noise).
 TEST(Hostile, HundredThousandVertexRing) {
-  std::vector<fp::Point> ring;
-  const int n = 100'000;
-  for (int k = 0; k < n; ++k) {
-    const double t = 2 * std::numbers::pi * k / n;
-    const double rho = 10 + 0.3 * std::sin(37 * t) + 0.01 * ((k * 7919) % 13);
-    ring.push_back({rho * std::cos(t), rho * std::sin(t)});
-  }
-  const fp::Domain d = fp::Domain::from_rings(ring);
+  const fp::Domain d = fp::test::hundred_thousand_vertex_ring();
   ASSERT_EQ(d.num_vertices(), 100'000U);
   const fp::Packing p = fill(d, fp::Method::closed, fp::Radii::uniform(0.05, 0.15));
   expect_certified(d, p);

@@ -4,8 +4,10 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <filesystem>
+#include <numbers>
 #include <string>
 #include <utility>
 #include <vector>
@@ -50,6 +52,19 @@ inline void expect_certified(const Domain& d, const Packing& p) {
   const CertifyReport again = certify(d, p.disks);
   EXPECT_TRUE(again.overlapping.empty()) << again.overlapping.size() << " overlapping pairs";
   EXPECT_TRUE(again.outside.empty()) << again.outside.size() << " disks outside";
+}
+
+/// A 100,000-vertex star-shaped ring: radius 10 with radial noise, which makes the boundary a saw
+/// with teeth up to 0.12 deep and 0.0006 apart.
+inline Domain hundred_thousand_vertex_ring() {
+  std::vector<Point> ring;
+  const int n = 100'000;
+  for (int k = 0; k < n; ++k) {
+    const double t = 2 * std::numbers::pi * k / n;
+    const double rho = 10 + 0.3 * std::sin(37 * t) + 0.01 * ((k * 7919) % 13);
+    ring.push_back({rho * std::cos(t), rho * std::sin(t)});
+  }
+  return Domain::from_rings(ring);
 }
 
 /// The file names of shapes/*.wkt, sorted: the parameters of the tests that run on every shape.
