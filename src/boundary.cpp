@@ -113,9 +113,7 @@ class BoundaryFront {
     clearance_ = req.clearance;
     margin_ = clearance_ / 2;
     band_ = clearance_ / 4;
-    log_rmin_ = std::log(rmin_);
-    const double span = std::log(rmax_) - log_rmin_;
-    class_scale_ = span > 0 ? kClasses / span : 0;
+    classes_ = RadiusClasses<kClasses>(rmin_, rmax_);
 
     const double estimate = estimate_disks(box, *req.radii);
     const auto reserve = static_cast<std::size_t>(std::min(estimate * 1.3 + 64, 1e9));
@@ -219,13 +217,7 @@ class BoundaryFront {
   [[nodiscard]] bool is_corner(std::int32_t e) const noexcept {
     return e >= 0 && static_cast<std::size_t>(e) < corners_.size();
   }
-  [[nodiscard]] int class_of(double r) const noexcept {
-    const double c = (std::log(r) - log_rmin_) * class_scale_;
-    if (!(c > 0)) {
-      return 0;
-    }
-    return std::min(static_cast<int>(c), kClasses - 1);
-  }
+  [[nodiscard]] int class_of(double r) const noexcept { return classes_.of(r); }
   double draw() { return req_.radii->quantile(rng_.uniform()); }
 
   // ------------------------------------------------------------------------------------------
@@ -990,7 +982,7 @@ class BoundaryFront {
   Point origin_;
   double width_ = 0, height_ = 0;
   double rmin_ = 0, rmax_ = 0, clearance_ = 0, margin_ = 0, band_ = 0;
-  double log_rmin_ = 0, class_scale_ = 0;
+  RadiusClasses<kClasses> classes_;
   double area_ = 0;
   double polygon_area_ = 0;  // shoelace, for the seeding rule
   int seeds_ = 0;

@@ -1,12 +1,16 @@
 // What the two generators (front.cpp, boundary.cpp) share: the uniform grid their neighbour
-// searches run on, the position of a disk touching two others, and freeing their arrays. Header-only and CGAL-free:
+// searches run on, the position of a disk touching two others, the radius classes of their void
+// buckets, and freeing their arrays. Header-only and CGAL-free:
 // both are hot loops.
 #pragma once
 
 #include <algorithm>
+#include <array>
+#include <bit>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 namespace frontpack::detail {
@@ -78,6 +82,39 @@ inline bool tangent_to_two(double ax, double ay, double ra, double bx, double by
   py = ay + t * uy + h * ux;
   return true;
 }
+
+/// Radius classes for the void buckets: N classes log-spaced between rmin and rmax; class k >= 1
+/// holds the radii from floor_[k] up, class 0 the rest (below floor_[1], and NaN); with
+/// rmin = rmax everything is class 0. of() looks a radius up with log2(N) comparisons instead
+/// of taking a logarithm: the generators ask for every gap tried and every void kept.
+template <int N>
+class RadiusClasses {
+  static_assert(N >= 2 && std::has_single_bit(static_cast<unsigned>(N)));  // of()'s binary search
+
+ public:
+  RadiusClasses() { floor_.fill(std::numeric_limits<double>::infinity()); }
+  RadiusClasses(double rmin, double rmax) : RadiusClasses() {
+    const double log_rmin = std::log(rmin);
+    const double span = std::log(rmax) - log_rmin;
+    floor_[0] = -std::numeric_limits<double>::infinity();
+    if (!(span > 0)) {
+      return;
+    }
+    for (std::size_t k = 1; k < N; ++k) {
+      floor_[k] = std::max(std::exp(log_rmin + span * static_cast<double>(k) / N), floor_[k - 1]);
+    }
+  }
+  [[nodiscard]] int of(double r) const noexcept {
+    std::size_t k = 0;
+    for (std::size_t step = N / 2; step > 0; step /= 2) {
+      k += r >= floor_[k + step] ? step : 0;
+    }
+    return static_cast<int>(k);
+  }
+
+ private:
+  std::array<double, static_cast<std::size_t>(N)> floor_;
+};
 
 /// Frees a vector's memory (clear() keeps it): the generators free their working arrays before
 /// copying the disks out, so that the peak holds the disks and the output only.

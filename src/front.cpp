@@ -69,9 +69,7 @@ class Front {
     const double short_side = std::min(box_.width(), box_.height());
     list_ = !Open && !(long_side <= kListAspect * short_side);  // NaN-safe: a degenerate box lists
     fill_voids_ = req.fill_voids;
-    log_rmin_ = std::log(req.radii->min());
-    const double span = std::log(rmax_) - log_rmin_;
-    class_scale_ = span > 0 ? kVoidClasses / span : 0;
+    classes_ = RadiusClasses<kVoidClasses>(req.radii->min(), rmax_);
 
     const double estimate = estimate_disks(box_, *req.radii);
     const auto reserve = static_cast<std::size_t>(std::min(estimate * 1.3 + 64, 1e9));
@@ -619,13 +617,7 @@ class Front {
   // that fails moves to the class of the radius that failed; one in the lowest class is dropped.
   // Every drawn radius is placed (here or on the front), so the size distribution is unchanged.
 
-  [[nodiscard]] int void_class(double r) const noexcept {
-    const double c = (std::log(r) - log_rmin_) * class_scale_;
-    if (!(c > 0)) {
-      return 0;
-    }
-    return std::min(static_cast<int>(c), kVoidClasses - 1);
-  }
+  [[nodiscard]] int void_class(double r) const noexcept { return classes_.of(r); }
 
   // Keeps segment s -> next_[s] as a void of class k.
   void keep_void(std::int32_t s, int k) {
@@ -738,7 +730,7 @@ class Front {
     std::int32_t a, b;
   };
   bool fill_voids_ = true;
-  double log_rmin_ = 0, class_scale_ = 0;
+  RadiusClasses<kVoidClasses> classes_;
   std::array<std::vector<VoidSeg>, kVoidClasses> voids_;
   std::uint32_t vmask_ = 0;  // bit k: voids_[k] is not empty
 };
