@@ -549,12 +549,13 @@ class BoundaryFront {
   }
 
   // The element the candidate overlaps most deeply (a disk, a reflex vertex or a wall), or kNone.
-  // Elements a and b, the candidate's parents, are skipped among the nodes (it touches them).
+  // Its parents need no skipping: it touches them at the full clearance, outside the band (at
+  // most 3/4 of the clearance) in which depth() and the wall test can see an overlap.
   // With Any, the first element found that the candidate overlaps: for callers that only need to
   // know whether there is one (most candidates that get this far overlap something, and the scan
   // ends there).
   template <bool Any = false>
-  std::int32_t deepest(const Probe& p, std::int32_t a, std::int32_t b) {
+  std::int32_t deepest(const Probe& p) {
     std::int32_t best = kNone;
     double best_depth = 0;
     const std::size_t home = cell_of(p.x, p.y);
@@ -598,15 +599,13 @@ class BoundaryFront {
       for (std::int64_t i = c0; i <= c1; ++i) {
         for (std::int32_t d = heads[i]; d != kNone;) {
           const Node& o = nodes[d];
-          if (d != a && d != b) {
-            const double dd = depth(p, o);
-            if (Any && dd > 0) {
-              return d;
-            }
-            if (dd > 0 && (best == kNone || dd > best_depth)) {
-              best = d;
-              best_depth = dd;
-            }
+          const double dd = depth(p, o);
+          if (Any && dd > 0) {
+            return d;
+          }
+          if (dd > 0 && (best == kNone || dd > best_depth)) {
+            best = d;
+            best_depth = dd;
           }
           d = o.cell_next;
         }
@@ -793,7 +792,7 @@ class BoundaryFront {
         continue;
       }
       const std::int32_t a = add_node(sx, sy, r);
-      if (deepest<true>(Probe{tx, sy, r2, r2 + margin_ + band_, r2 + margin_ - band_}, a, kNone) != kNone) {
+      if (deepest<true>(Probe{tx, sy, r2, r2 + margin_ + band_, r2 + margin_ - band_}) != kNone) {
         continue;  // cannot happen (they are apart by the clearance); kept for safety
       }
       const std::int32_t b = add_node(tx, sy, r2);
@@ -811,7 +810,7 @@ class BoundaryFront {
     if (!(x - r >= 0 && x + r <= width_ && y - r >= 0 && y + r <= height_)) {
       return false;
     }
-    return deepest<true>(Probe{x, y, r, r + margin_ + band_, r + margin_ - band_}, kNone, kNone) == kNone;
+    return deepest<true>(Probe{x, y, r, r + margin_ + band_, r + margin_ - band_}) == kNone;
   }
 
   // Crossing number (floating point: the points asked about are seed centres and candidates that
@@ -911,7 +910,7 @@ class BoundaryFront {
       }
       const Probe p{px, py, r, r + margin_ + band_, r + margin_ - band_};
       // At the last move, only whether anything is in the way matters.
-      const std::int32_t d = move == moves && move > 0 ? deepest<true>(p, x, y) : deepest(p, x, y);
+      const std::int32_t d = move == moves && move > 0 ? deepest<true>(p) : deepest(p);
       if (d == kNone) {
         if (!supported_by(x, px, py) || !supported_by(y, px, py)) {
           return false;

@@ -226,10 +226,12 @@ class Front {
     return is_wall(v) ? Open && crosses_wall(v, p.x, p.y, p.r) : overlaps(p, nodes_[static_cast<std::size_t>(v)]);
   }
 
-  // Whether a disk at (x, y, r) overlaps any placed disk or any wall, other than c and n. The
-  // grid scan covers only the cells that the box of possible overlaps spans: a disk d
+  // Whether a disk at (x, y, r) overlaps any placed disk or any wall, other than walls c and n.
+  // The grid scan covers only the cells that the box of possible overlaps spans: a disk d
   // overlapping this one has |x - x_d| < r + r_d <= r + rmax; the reach is padded so that
-  // rounding cannot lose a cell. Walls are obstacles whether or not they are on the front.
+  // rounding cannot lose a cell. Walls are obstacles whether or not they are on the front. The
+  // candidate's parent disks need no skipping: it touches them at the full clearance, outside
+  // the band (at most 3/4 of the clearance) where overlaps() can say yes.
   bool overlaps_anything(const Probe& p, std::int32_t c, std::int32_t n) {
     const double x = p.x;
     const double y = p.y;
@@ -252,7 +254,7 @@ class Front {
       for (std::int64_t i = c0; i <= c1; ++i) {
         for (std::int32_t d = heads[i]; d != kNone;) {
           const Node& o = nodes[d];
-          if (d != c && d != n && overlaps(p, o)) {
+          if (overlaps(p, o)) {
             return true;
           }
           d = o.cell_next;
