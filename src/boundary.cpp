@@ -174,7 +174,7 @@ class BoundaryFront {
       if (try_gap(g, r, k >= 0)) {
         area_ += r * r;
         r = draw();
-      } else if (req_.fill_voids && cls > 0) {
+      } else if (req_.fill_voids && cls > 0 && !hopeless_) {
         // r did not fit: the gap may still take a smaller disk, at most as large as the pocket
         // between its elements and the disk in the way.
         push_void(g, cls, blocker_);
@@ -898,7 +898,13 @@ class BoundaryFront {
     double py = 0;
     ++stats_.attempts;
     blocker_ = kNone;
+    hopeless_ = false;
     if (!tangent(x, y, r, px, py)) {
+      // No disk this small touches both (too far apart, or one holds the other, or parallel
+      // walls): no smaller one does either. The gap is not kept as a void for smaller radii,
+      // where it would fail the same way every time until the lowest class dropped it. (Not
+      // with a reflex vertex: one lies on its own walls' lines, where rounding decides.)
+      hopeless_ = !is_corner(x) && !is_corner(y);
       return false;
     }
     const int moves = in_void ? kVoidMoves : (on_wall(x) || on_wall(y)) ? kWallMoves : kMoves;
@@ -986,6 +992,7 @@ class BoundaryFront {
   double polygon_area_ = 0;  // shoelace, for the seeding rule
   int seeds_ = 0;
   std::int32_t blocker_ = kNone;  // the deepest overlap at a failed gap's first position
+  bool hopeless_ = false;         // the failed gap takes no disk of the radius tried or smaller
 
   std::vector<Wall> walls_;
   std::vector<Corner> corners_;  // node i < corners_.size() is reflex vertex i (radius 0)
