@@ -647,7 +647,10 @@ class Front {
     ++stats_.attempts;
     double px = 0;
     double py = 0;
-    if (tangent(v.a, v.b, r, px, py) && !overlaps_anything(probe(px, py, r), v.a, v.b)) {
+    if (!tangent(v.a, v.b, r, px, py)) {
+      return false;  // too far apart for r, so for any smaller radius: the void is dropped
+    }
+    if (!overlaps_anything(probe(px, py, r), v.a, v.b)) {
       add_node(px, py, r);  // off the front: it only fills
       ++stats_.void_fills;
       return true;
