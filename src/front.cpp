@@ -616,7 +616,9 @@ class Front {
   // the most they can take (log-spaced radius classes). Each new radius is tried first in the
   // tightest bucket whose radii all exceed it (the most recent void there): tangent to the void
   // segment's two disks on its free side, accepted if it overlaps nothing (the grid). A void
-  // that fails moves to the class of the radius that failed; one in the lowest class is dropped.
+  // where something is in the way moves to the class of the radius that failed; one in the
+  // lowest class, or one whose disks are too far apart for that radius (so for any smaller one),
+  // is dropped.
   // Every drawn radius is placed (here or on the front), so the size distribution is unchanged.
 
   [[nodiscard]] int void_class(double r) const noexcept { return classes_.of(r); }
