@@ -4,11 +4,13 @@
 // docs/robustness.md has the table of cases and outcomes.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <limits>
 #include <numbers>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "frontpack/frontpack.hpp"
@@ -182,4 +184,133 @@ TEST(Hostile, RequestBeyondTheMemoryLimitIsRefused) {
   }
   o.memory_limit = 100'000'000;  // 100 MB: enough
   EXPECT_NO_THROW((void)fp::fill(d, o));
+}
+
+// Rings collapsed into a few ulps: 131,072 vertices on an 8 x 8 grid of points one ulp apart
+// near (1, 1), joined in a random order. Every pair of edge boxes meets, so a validator that
+// classifies every box pair needs billions of steps (16,384 vertices took 8.7 s; this size would
+// take minutes and fail the CTest time limit). The refusal must name the problem with the
+// smallest pair of edges, the one a full enumeration reports: found here by an independent
+// search on the integer grid (exact there), edge by edge.
+namespace {
+
+struct Grid {
+  std::int64_t x, y;
+};
+
+std::int64_t orient(Grid a, Grid b, Grid c) {
+  const std::int64_t o = (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
+  return (o > 0) - (o < 0);
+}
+bool on_segment(Grid p, Grid a, Grid b) {
+  return std::min(a.x, b.x) <= p.x && p.x <= std::max(a.x, b.x) && std::min(a.y, b.y) <= p.y &&
+         p.y <= std::max(a.y, b.y);
+}
+bool segments_meet(Grid a, Grid b, Grid c, Grid d) {
+  const std::int64_t o1 = orient(a, b, c);
+  const std::int64_t o2 = orient(a, b, d);
+  const std::int64_t o3 = orient(c, d, a);
+  const std::int64_t o4 = orient(c, d, b);
+  if (o1 * o2 < 0 && o3 * o4 < 0) {
+    return true;
+  }
+  return (o1 == 0 && on_segment(c, a, b)) || (o2 == 0 && on_segment(d, a, b)) || (o3 == 0 && on_segment(a, c, d)) ||
+         (o4 == 0 && on_segment(b, c, d));
+}
+// p -> s -> q folds back: q on p's side of s, on the line.
+bool folds(Grid p, Grid s, Grid q) {
+  return orient(p, s, q) == 0 && (p.x - s.x) * (q.x - s.x) + (p.y - s.y) * (q.y - s.y) > 0;
+}
+
+// A random closed walk on the 8 x 8 grid without repeated consecutive points; without spikes
+// (folds) unless `spikes`.
+std::vector<Grid> collapsed_walk(std::size_t n, bool spikes) {
+  std::uint64_t state = 2003;
+  const auto next = [&state]() {
+    state = state * 6364136223846793005ULL + 1442695040888963407ULL;
+    return static_cast<std::int64_t>(state >> 61);  // 0..7
+  };
+  std::vector<Grid> w{{0, 0}, {5, 1}};
+  while (w.size() < n) {
+    const Grid q{next(), next()};
+    const Grid& s = w.back();
+    if ((q.x == s.x && q.y == s.y) || (!spikes && folds(w[w.size() - 2], s, q))) {
+      continue;
+    }
+    w.push_back(q);
+  }
+  while ((w.back().x == w.front().x && w.back().y == w.front().y) ||
+         (!spikes && (folds(w[w.size() - 2], w.back(), w.front()) || folds(w.back(), w.front(), w[1])))) {
+    w.pop_back();
+  }
+  return w;
+}
+
+fp::Ring to_ring(const std::vector<Grid>& w) {
+  fp::Ring ring;
+  for (const Grid& g : w) {
+    ring.push_back({1 + static_cast<double>(g.x) * 0x1p-52, 1 + static_cast<double>(g.y) * 0x1p-52});
+  }
+  return ring;
+}
+
+// The two edge numbers a message names ("edge E (...)-(...) and edge F (...)").
+std::pair<std::size_t, std::size_t> named_edges(const std::string& message) {
+  const std::size_t a = message.find("edge ");
+  const std::size_t b = message.find(" and edge ", a);
+  if (a == std::string::npos || b == std::string::npos) {
+    return {0, 0};
+  }
+  return {std::stoul(message.substr(a + 5)), std::stoul(message.substr(b + 10))};
+}
+
+}  // namespace
+
+TEST(Hostile, RingCollapsedIntoAFewUlpsNamesItsFirstSelfTouch) {
+  const std::vector<Grid> w = collapsed_walk(131072, /*spikes=*/false);
+  const std::size_t n = w.size();
+  // The smallest pair (e, f), e < f, of non-adjacent edges that meet.
+  std::pair<std::size_t, std::size_t> first{n, n};
+  for (std::size_t e = 0; e < n && first.first == n; ++e) {
+    for (std::size_t f = e + 2; f < n; ++f) {
+      if ((e == 0 && f == n - 1) || !segments_meet(w[e], w[(e + 1) % n], w[f], w[(f + 1) % n])) {
+        continue;
+      }
+      first = {e, f};
+      break;
+    }
+  }
+  ASSERT_LT(first.first, n);
+  try {
+    (void)fp::Domain::from_rings(to_ring(w));
+    ADD_FAILURE() << "a self-intersecting ring was accepted";
+  } catch (const fp::InvalidDomainError& e) {
+    EXPECT_EQ(e.kind(), fp::InvalidDomainError::Kind::self_intersection) << e.what();
+    EXPECT_EQ(named_edges(e.what()), first) << e.what();
+  }
+}
+
+TEST(Hostile, RingCollapsedIntoAFewUlpsNamesItsFirstSpike) {
+  const std::vector<Grid> w = collapsed_walk(131072, /*spikes=*/true);
+  const std::size_t n = w.size();
+  // The spike with the smallest pair of edges: the first at a vertex e + 1 (edges e and e + 1),
+  // or the one at vertex 0 (edges 0 and n - 1), which comes after edges 0 and 1 only.
+  std::pair<std::size_t, std::size_t> first{n, n};
+  for (std::size_t e = 0; e + 1 < n; ++e) {
+    if (folds(w[e], w[e + 1], w[(e + 2) % n])) {
+      first = {e, e + 1};
+      break;
+    }
+  }
+  if (folds(w[n - 1], w[0], w[1])) {
+    first = std::min(first, std::pair<std::size_t, std::size_t>{0, n - 1});
+  }
+  ASSERT_LT(first.first, n);
+  try {
+    (void)fp::Domain::from_rings(to_ring(w));
+    ADD_FAILURE() << "a ring with a spike was accepted";
+  } catch (const fp::InvalidDomainError& e) {
+    EXPECT_NE(std::string(e.what()).find("fold back"), std::string::npos) << e.what();
+    EXPECT_EQ(named_edges(e.what()), first) << e.what();
+  }
 }
