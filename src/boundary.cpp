@@ -33,8 +33,9 @@
 // disks: it is then denser than the interior, and the interior sparser.) Every drawn radius is
 // placed where it fits, so the size distribution is the requested one; the run ends when the front
 // is done and no void can take the radius drawn. A void that fails again moves to a smaller class;
-// one that can take nothing is dropped, so every gap is tried a bounded number of times and the run
-// ends.
+// one that can take nothing (the lowest class, or elements too far apart for the radius that
+// failed, so for every smaller one) is dropped, so every gap is tried a bounded number of times
+// and the run ends.
 //
 // Order. Gaps on a wall or a reflex vertex are taken before the others, so the first layer along
 // every wall is laid (from every corner) before the interior fronts arrive; without that, fronts
