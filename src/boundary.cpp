@@ -589,7 +589,7 @@ class BoundaryFront {
         }
       }
     }
-    const double r_reach = (p.r + rmax_) * (1 + 1e-9);
+    const double r_reach = (p.r_hi + rmax_) * (1 + 1e-9);  // depth() can say yes up to r_hi + o.r
     const std::int64_t c0 = col(p.x - r_reach);
     const std::int64_t c1 = col(p.x + r_reach);
     const std::int64_t r0 = row(p.y - r_reach);

@@ -227,11 +227,11 @@ class Front {
   }
 
   // Whether a disk at (x, y, r) overlaps any placed disk or any wall, other than walls c and n.
-  // The grid scan covers only the cells that the box of possible overlaps spans: a disk d
-  // overlapping this one has |x - x_d| < r + r_d <= r + rmax; the reach is padded so that
-  // rounding cannot lose a cell. Walls are obstacles whether or not they are on the front. The
-  // candidate's parent disks need no skipping: it touches them at the full clearance, outside
-  // the band (at most 3/4 of the clearance) where overlaps() can say yes.
+  // The grid scan covers only the cells that the box of possible overlaps spans: overlaps() can
+  // say yes for a disk d only if |x - x_d| < r_hi + r_d <= r_hi + rmax (r_hi = r + 3/4 of the
+  // clearance); the reach is padded so that rounding cannot lose a cell. Walls are obstacles whether or not they are on
+  // the front. The candidate's parent disks need no skipping: it touches them at the full clearance, outside the band
+  // (at most 3/4 of the clearance) where overlaps() can say yes.
   bool overlaps_anything(const Probe& p, std::int32_t c, std::int32_t n) {
     const double x = p.x;
     const double y = p.y;
@@ -243,7 +243,7 @@ class Front {
         }
       }
     }
-    const double reach = (r + rmax_) * (1 + 1e-9);
+    const double reach = (p.r_hi + rmax_) * (1 + 1e-9);
     const std::int64_t c0 = col(x - reach);
     const std::int64_t c1 = col(x + reach);
     const std::int64_t r0 = row(y - reach);

@@ -438,3 +438,37 @@ TEST(Fill, WindowSizesAllCertify) {
     EXPECT_GT(blocked_small, blocked_whole) << fp::to_string(m);
   }
 }
+
+// docs/robustness.md, "Acceptance": the generators accept a disk only if it keeps every other
+// one at least r1 + r2 + clearance / 2 away. With a clearance the user gives, comparable to the
+// radii, the grid scans must reach that far: they once reached r + rmax only, and disks of
+// radius near rmax just beyond it went unseen (pairs at 0.03-0.2 of the clearance instead of
+// 0.5). Checked on every pair closer than r1 + r2 + clearance, in the output's doubles (their
+// rounding is below 1e-13 here, against a clearance of 0.2 or 0.5).
+TEST(Fill, EveryPairKeepsHalfTheClearance) {
+  const fp::Domain d = fp::Domain::from_wkt("POLYGON((0 0,60 0,60 60,0 60,0 0))");
+  for (const double clearance : {0.2, 0.5}) {
+    for (const fp::Method m : {fp::Method::closed, fp::Method::open, fp::Method::boundary}) {
+      fp::FillOptions o;
+      o.method = m;
+      o.radii = fp::Radii::uniform(0.49, 0.5);
+      o.window = 1;
+      o.clearance = clearance;
+      o.seed = 7;
+      const fp::Packing p = fp::fill(d, o);
+      ASSERT_GT(p.disks.size(), 1000U);
+      std::vector<fp::Disk> disks = p.disks;
+      std::sort(disks.begin(), disks.end(),
+                [](const fp::Disk& a, const fp::Disk& b) { return a.centre.x < b.centre.x; });
+      double worst = clearance;
+      for (std::size_t i = 0; i < disks.size(); ++i) {
+        for (std::size_t j = i + 1; j < disks.size() && disks[j].centre.x - disks[i].centre.x < 1 + clearance; ++j) {
+          const double gap = std::hypot(disks[j].centre.x - disks[i].centre.x, disks[j].centre.y - disks[i].centre.y) -
+                             disks[i].radius - disks[j].radius;
+          worst = std::min(worst, gap);
+        }
+      }
+      EXPECT_GE(worst, clearance / 2 - 1e-9) << "method " << static_cast<int>(m) << ", clearance " << clearance;
+    }
+  }
+}
