@@ -229,9 +229,9 @@ class Front {
   // Whether a disk at (x, y, r) overlaps any placed disk or any wall, other than walls c and n.
   // The grid scan covers only the cells that the box of possible overlaps spans: overlaps() can
   // say yes for a disk d only if |x - x_d| < r_hi + r_d <= r_hi + rmax (r_hi = r + 3/4 of the
-  // clearance); the reach is padded so that rounding cannot lose a cell. Walls are obstacles whether or not they are on
-  // the front. The candidate's parent disks need no skipping: it touches them at the full clearance, outside the band
-  // (at most 3/4 of the clearance) where overlaps() can say yes.
+  // clearance); the reach is padded so that rounding cannot lose a cell. Walls are obstacles
+  // whether or not they are on the front. The candidate's parent disks need no skipping: it
+  // touches them at the full clearance, outside the band where overlaps() can say yes.
   bool overlaps_anything(const Probe& p, std::int32_t c, std::int32_t n) {
     const double x = p.x;
     const double y = p.y;
