@@ -100,8 +100,10 @@ class RadiusClasses {
     if (!(span > 0)) {
       return;
     }
+    // Above rmin (a range a few ulps wide rounds the low floors down to it) and increasing.
+    const double above_rmin = std::nextafter(rmin, std::numeric_limits<double>::infinity());
     for (std::size_t k = 1; k < N; ++k) {
-      floor_[k] = std::max(std::exp(log_rmin + span * static_cast<double>(k) / N), floor_[k - 1]);
+      floor_[k] = std::max({std::exp(log_rmin + span * static_cast<double>(k) / N), above_rmin, floor_[k - 1]});
     }
   }
   [[nodiscard]] int of(double r) const noexcept {
