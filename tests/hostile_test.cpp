@@ -188,7 +188,7 @@ TEST(Hostile, RequestBeyondTheMemoryLimitIsRefused) {
 
 // Rings collapsed into a few ulps: 131,072 vertices on an 8 x 8 grid of points one ulp apart
 // near (1, 1), joined in a random order. Every pair of edge boxes meets, so a validator that
-// classifies every box pair needs billions of steps (16,384 vertices took 8.7 s; this size would
+// classifies every box pair needs billions of steps (16,384 vertices took 6.6-8.7 s; this size would
 // take minutes and fail the CTest time limit). The refusal must name the problem with the
 // smallest pair of edges, the one a full enumeration reports: found here by an independent
 // search on the integer grid (exact there), edge by edge.
@@ -223,21 +223,42 @@ bool folds(Grid p, Grid s, Grid q) {
 }
 
 // A random closed walk on the 8 x 8 grid without repeated consecutive points; without spikes
-// (folds) unless `spikes`.
-std::vector<Grid> collapsed_walk(std::size_t n, bool spikes) {
+// (folds) unless `spikes`. With `clean` > 0 the ring starts with that many edges of a simple
+// zigzag far from the grid (x from 100, y 0 or 50) and reaches the grid over the top (y = 200),
+// so its first problem lies beyond the first blocks of the validator's ordered search; it closes
+// from the grid through (-50, -50).
+std::vector<Grid> collapsed_walk(std::size_t n, bool spikes, std::size_t clean = 0) {
   std::uint64_t state = 2003;
   const auto next = [&state]() {
     state = state * 6364136223846793005ULL + 1442695040888963407ULL;
     return static_cast<std::int64_t>(state >> 61);  // 0..7
   };
-  std::vector<Grid> w{{0, 0}, {5, 1}};
-  while (w.size() < n) {
+  std::vector<Grid> w;
+  for (std::size_t k = 0; k < clean; ++k) {
+    w.push_back({100 + static_cast<std::int64_t>(k), static_cast<std::int64_t>(k % 2) * 50});
+  }
+  if (clean > 0) {
+    w.push_back({100 + static_cast<std::int64_t>(clean), 200});
+    w.push_back({0, 200});
+  } else {
+    w = {{0, 0}, {5, 1}};
+  }
+  const std::size_t end = clean > 0 ? n - 1 : n;
+  while (w.size() < end) {
     const Grid q{next(), next()};
     const Grid& s = w.back();
     if ((q.x == s.x && q.y == s.y) || (!spikes && folds(w[w.size() - 2], s, q))) {
       continue;
     }
     w.push_back(q);
+  }
+  if (clean > 0) {
+    const Grid close{-50, -50};
+    while (folds(w[w.size() - 2], w.back(), close)) {
+      w.pop_back();
+    }
+    w.push_back(close);
+    return w;
   }
   while ((w.back().x == w.front().x && w.back().y == w.front().y) ||
          (!spikes && (folds(w[w.size() - 2], w.back(), w.front()) || folds(w.back(), w.front(), w[1])))) {
@@ -267,8 +288,11 @@ std::pair<std::size_t, std::size_t> named_edges(const std::string& message) {
 }  // namespace
 
 TEST(Hostile, RingCollapsedIntoAFewUlpsNamesItsFirstSelfTouch) {
-  const std::vector<Grid> w = collapsed_walk(131072, /*spikes=*/false);
+  const std::vector<Grid> w = collapsed_walk(131072, /*spikes=*/false, /*clean=*/300);
   const std::size_t n = w.size();
+  for (std::size_t v = 0; v < n; ++v) {
+    ASSERT_FALSE(folds(w[(v + n - 1) % n], w[v], w[(v + 1) % n])) << "a spike at vertex " << v;
+  }
   // The smallest pair (e, f), e < f, of non-adjacent edges that meet.
   std::pair<std::size_t, std::size_t> first{n, n};
   for (std::size_t e = 0; e < n && first.first == n; ++e) {
@@ -280,6 +304,7 @@ TEST(Hostile, RingCollapsedIntoAFewUlpsNamesItsFirstSelfTouch) {
       break;
     }
   }
+  ASSERT_GT(first.first, 300U);  // beyond the zigzag, so beyond the first blocks
   ASSERT_LT(first.first, n);
   try {
     (void)fp::Domain::from_rings(to_ring(w));
@@ -312,5 +337,13 @@ TEST(Hostile, RingCollapsedIntoAFewUlpsNamesItsFirstSpike) {
   } catch (const fp::InvalidDomainError& e) {
     EXPECT_NE(std::string(e.what()).find("fold back"), std::string::npos) << e.what();
     EXPECT_EQ(named_edges(e.what()), first) << e.what();
+  }
+  // The only spike at vertex 0, between the closing edge (4) and the first (0).
+  try {
+    (void)fp::Domain::from_wkt("POLYGON((2 0,0 0,0 2,1 2,1 0,2 0))");
+    ADD_FAILURE() << "a ring with a spike at its first vertex was accepted";
+  } catch (const fp::InvalidDomainError& e) {
+    EXPECT_NE(std::string(e.what()).find("fold back"), std::string::npos) << e.what();
+    EXPECT_EQ(named_edges(e.what()), (std::pair<std::size_t, std::size_t>{0, 4})) << e.what();
   }
 }
