@@ -792,10 +792,12 @@ class BoundaryFront {
       if (!inside_polygon(sx, sy) || !fits(sx, sy, r) || !fits(tx, sy, r2)) {
         continue;
       }
-      const std::int32_t a = add_node(sx, sy, r);
-      if (deepest<true>(Probe{tx, sy, r2, r2 + margin_ + band_, r2 + margin_ - band_}) != kNone) {
-        continue;  // cannot happen (they are apart by the clearance); kept for safety
+      // The pair apart by the clearance, as tangent disks are (this cannot fail; checked before
+      // the first disk is placed, so that nothing is left behind if it did).
+      if (depth(Probe{tx, sy, r2, r2 + margin_ + band_, r2 + margin_ - band_}, Node{sx, sy, r, kNone, 0}) > 0) {
+        continue;
       }
+      const std::int32_t a = add_node(sx, sy, r);
       const std::int32_t b = add_node(tx, sy, r2);
       area_ += r2 * r2;
       push_gap(Gap{a, b});
