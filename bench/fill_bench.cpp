@@ -99,6 +99,38 @@ BENCHMARK(BM_Pipeline)
     ->Unit(benchmark::kMillisecond)
     ->Iterations(1);
 
+// One fill per run, for counting instructions rather than timing them (this shared machine's
+// times drift by 15-20% in a day; its instruction counts do not). Callgrind then counts the
+// advancing front alone, the exact cull and the overlap pass running uncounted; divide by the
+// `generated` counter:
+//   valgrind --tool=callgrind --toggle-collect='frontpack::detail::advance_*'
+//       build/release/bench/frontpack_bench_fill --benchmark_filter=Once/1/0/2/
+// (one command line).
+// Arguments: method, fill_voids, side of the square (2: ~112k disks, about a minute under
+// callgrind; 6: issue #3's square, ~1M disks).
+void BM_Once(benchmark::State& state) {
+  const auto method = static_cast<fp::Method>(state.range(0));
+  const std::string side = std::to_string(state.range(2));
+  const fp::Domain d =
+      fp::Domain::from_wkt("POLYGON((0 0," + side + " 0," + side + " " + side + ",0 " + side + ",0 0))");
+  fp::Packing p;
+  for (auto _ : state) {
+    p = fp::fill(d, options(method, state.range(1) != 0));
+  }
+  report(state, p, d);
+  state.counters["generated"] = static_cast<double>(p.certificate.generated);
+  state.SetLabel(std::string(fp::to_string(method)) + (state.range(1) != 0 ? ", voids" : ""));
+}
+BENCHMARK(BM_Once)
+    ->Args({static_cast<int>(fp::Method::open), 0, 2})
+    ->Args({static_cast<int>(fp::Method::closed), 0, 2})
+    ->Args({static_cast<int>(fp::Method::boundary), 1, 2})
+    ->Args({static_cast<int>(fp::Method::open), 0, 6})
+    ->Args({static_cast<int>(fp::Method::closed), 0, 6})
+    ->Args({static_cast<int>(fp::Method::boundary), 1, 6})
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(1);
+
 }  // namespace
 
 BENCHMARK_MAIN();
