@@ -649,6 +649,9 @@ class BoundaryFront {
     if (walls == 1) {
       return pocket_at_wall(a, b, d);
     }
+    if (walls == 2) {
+      return pocket_at_walls(a, b, d);
+    }
     if (walls != 0) {
       return -1;
     }
@@ -713,6 +716,56 @@ class BoundaryFront {
     const double vx = (beta * wl.ny - 1 * cy) / det;
     const double vy = (cx * 1 - wl.nx * beta) / det;
     return smallest_root(ux, uy, vx, vy, ri, [](double) { return true; });
+  }
+
+  // pocket() with two walls among the three (a crevice of a rough boundary, or a corner with a disk
+  // in the way): the circle of radius rho at distance rho from both walls' lines (inside) touching
+  // the node from outside; the smallest such rho. Its centre moves along a line as rho grows. The
+  // walls are segments: where the circle's foot on a wall's line falls off the segment, a vertex
+  // and not the line bounds the pocket, and none is computed (-1).
+  [[nodiscard]] double pocket_at_walls(std::int32_t a, std::int32_t b, std::int32_t d) const noexcept {
+    std::int32_t w1 = a;
+    std::int32_t w2 = b;
+    std::int32_t i = d;
+    if (!is_wall(a)) {
+      w1 = d;
+      i = a;
+    } else if (!is_wall(b)) {
+      w2 = d;
+      i = b;
+    }
+    const Wall& p = walls_[wall_index(w1)];
+    const Wall& q = walls_[wall_index(w2)];
+    const Node& ni = nodes_[static_cast<std::size_t>(i)];
+    // n1 . c = w1 + rho, n2 . c = w2 + rho: c = X + rho V.
+    const double det = p.nx * q.ny - p.ny * q.nx;
+    if (!(std::abs(det) > 1e-9)) {
+      return -1;  // parallel
+    }
+    const double xx = (p.w * q.ny - q.w * p.ny) / det;
+    const double xy = (p.nx * q.w - q.nx * p.w) / det;
+    const double vx = (q.ny - p.ny) / det;
+    const double vy = (p.nx - q.nx) / det;
+    // A node covering the lines' crossing is met by the growing circle only on its way out: the
+    // root would be the least radius clear of it, not the most.
+    const double ux = xx - ni.x;
+    const double uy = xy - ni.y;
+    if (!(ux * ux + uy * uy > ni.r * ni.r)) {
+      return -1;
+    }
+    const double rho = smallest_root(ux, uy, vx, vy, ni.r, [](double) { return true; });
+    if (rho < 0) {
+      return -1;
+    }
+    const double cx = xx + rho * vx;
+    const double cy = xy + rho * vy;
+    for (const Wall* wl : {&p, &q}) {
+      const double u = (cx - wl->ax) * wl->tx + (cy - wl->ay) * wl->ty;
+      if (!(u >= 0 && u <= wl->len)) {
+        return -1;
+      }
+    }
+    return rho;
   }
 
   // The smallest rho > 0 with |u + rho v| = ri + rho that `accept` takes, or -1.
