@@ -23,7 +23,7 @@
 // Voids. A gap where the drawn disk does not fit is not thrown away: it is kept in a bucket by the
 // most it can take (log-spaced radius classes between rmin and rmax): the radius that failed there,
 // or less, the radius of the pocket between its two elements and the element in the way (pocket():
-// Apollonius' problem for three disks, or two disks and a wall). The cusps behind each new disk
+// Apollonius' problem for three disks, two disks and a wall, or a disk and two walls). The cusps behind each new disk
 // (between it, a wall it touches and its other parent; or between two parents that do not touch)
 // are kept the same way. Each new radius is tried first in the voids, those on a rough wall first,
 // in the tightest class whose radii all exceed it, then on the front. A rough wall is an edge
@@ -508,11 +508,7 @@ class BoundaryFront {
   // ------------------------------------------------------------------------------------------
   // Overlap tests.
 
-  struct Probe {
-    double x, y, r;
-    double r_hi;  // r + margin + band
-    double r_lo;  // r + margin - band
-  };
+  [[nodiscard]] Probe probe(double x, double y, double r) const noexcept { return Probe::at(x, y, r, margin_, band_); }
 
   // How far the candidate comes into disk o's keep-out distance r + o.r + margin (> 0: it
   // overlaps); as front.cpp, floating point outside a narrow band, the exact predicate inside.
@@ -847,7 +843,7 @@ class BoundaryFront {
       }
       // The pair apart by the clearance, as tangent disks are (this cannot fail; checked before
       // the first disk is placed, so that nothing is left behind if it did).
-      if (depth(Probe{tx, sy, r2, r2 + margin_ + band_, r2 + margin_ - band_}, Node{sx, sy, r, kNone, 0}) > 0) {
+      if (depth(probe(tx, sy, r2), Node{sx, sy, r, kNone, 0}) > 0) {
         continue;
       }
       const std::int32_t a = add_node(sx, sy, r);
@@ -866,7 +862,7 @@ class BoundaryFront {
     if (!(x - r >= 0 && x + r <= width_ && y - r >= 0 && y + r <= height_)) {
       return false;
     }
-    return deepest<true>(Probe{x, y, r, r + margin_ + band_, r + margin_ - band_}) == kNone;
+    return deepest<true>(probe(x, y, r)) == kNone;
   }
 
   // Crossing number (floating point: the points asked about are seed centres and candidates that
@@ -970,7 +966,7 @@ class BoundaryFront {
             py + r <= height_ + clearance_)) {
         return false;  // outside the polygon's box, so outside the polygon
       }
-      const Probe p{px, py, r, r + margin_ + band_, r + margin_ - band_};
+      const Probe p = probe(px, py, r);
       // At the last move, only whether anything is in the way matters.
       const std::int32_t d = move == moves && move > 0 ? deepest<true>(p) : deepest(p);
       if (d == kNone) {

@@ -1,7 +1,7 @@
 // What the two generators (front.cpp, boundary.cpp) share: the uniform grid their neighbour
-// searches run on, the position of a disk touching two others, the radius classes of their void
-// buckets, and freeing their arrays. Header-only and CGAL-free:
-// both are hot loops.
+// searches run on, the candidate disk their overlap tests take, the position of a disk touching
+// two others, the radius classes of their void buckets, and freeing their arrays. Header-only and
+// CGAL-free: both are hot loops.
 #pragma once
 
 #include <algorithm>
@@ -54,6 +54,19 @@ struct CellGrid {
       return 0;  // also NaN
     }
     return std::min(static_cast<std::int64_t>(g), static_cast<std::int64_t>(n) - 1);
+  }
+};
+
+/// A candidate disk with the limits of the overlap test's band precomputed: the test runs tens of
+/// times per disk. Another disk o is clear beyond r_hi + o.r and overlapping within r_lo + o.r;
+/// in between the exact predicate decides (margin = clearance / 2, band = clearance / 4).
+struct Probe {
+  double x, y, r;
+  double r_hi;  // r + margin + band
+  double r_lo;  // r + margin - band
+
+  static Probe at(double x, double y, double r, double margin, double band) noexcept {
+    return {x, y, r, r + margin + band, r + margin - band};
   }
 };
 

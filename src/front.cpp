@@ -178,15 +178,7 @@ class Front {
   [[nodiscard]] std::int64_t row(double y) const noexcept { return grid_.row(y); }
   [[nodiscard]] std::size_t cell_of(double x, double y) const noexcept { return grid_.cell_of(x, y); }
 
-  // A candidate disk with its band limits precomputed: the overlap test runs ~25 times per disk.
-  struct Probe {
-    double x, y, r;
-    double r_hi;  // r + margin + band
-    double r_lo;  // r + margin - band
-  };
-  [[nodiscard]] Probe probe(double x, double y, double r) const noexcept {
-    return {x, y, r, r + margin_ + band_, r + margin_ - band_};
-  }
+  [[nodiscard]] Probe probe(double x, double y, double r) const noexcept { return Probe::at(x, y, r, margin_, band_); }
 
   // Whether the candidate comes closer to disk o than r + o.r + margin: "overlaps" for the
   // generator. The margin (half the clearance) keeps every accepted pair apart by more than the
