@@ -82,17 +82,19 @@ inline bool tangent_to_two(double ax, double ay, double ra, double bx, double by
   if (!(d2 > 0)) {
     return false;
   }
-  const double inv_d = 1 / std::sqrt(d2);  // one division instead of three
-  const double t = (ra * ra - rb * rb + d2) * (0.5 * inv_d);
-  const double h2 = ra * ra - t * t;
-  if (!(h2 >= 0)) {
+  // With q = ra^2 - rb^2 + d2 (2 d times the distance from a to the chord) and
+  // H = 4 ra^2 d2 - q^2 (2 d times the half-chord, squared), the centre is
+  // a + (q (dx, dy) +- sqrt(H) (-dy, dx)) / (2 d2): one square root and one division, independent
+  // of each other, where normalising first takes two square roots in a row.
+  const double q = ra * ra - rb * rb + d2;
+  const double big_h = 4 * ra * ra * d2 - q * q;
+  if (!(big_h >= 0)) {
     return false;
   }
-  const double h = left ? std::sqrt(h2) : -std::sqrt(h2);
-  const double ux = dx * inv_d;
-  const double uy = dy * inv_d;
-  px = ax + t * ux - h * uy;
-  py = ay + t * uy + h * ux;
+  const double s = left ? std::sqrt(big_h) : -std::sqrt(big_h);
+  const double f = 0.5 / d2;
+  px = ax + (q * dx - s * dy) * f;
+  py = ay + (q * dy + s * dx) * f;
   return true;
 }
 

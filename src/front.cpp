@@ -198,6 +198,12 @@ class Front {
     if (lo > 0 && d2 < lo * lo) {
       return true;
     }
+    return overlaps_exact(p, o);
+  }
+
+  // Out of line, so that the scan loops keep the disks they test in registers (inlined, the
+  // call's arguments made them copy every disk to the stack).
+  [[gnu::noinline, gnu::cold]] bool overlaps_exact(const Probe& p, const Node& o) {
     ++stats_.exact_checks;
     return disks_closer_than_exact({p.x, p.y}, p.r, {o.x, o.y}, o.r, margin_);
   }
