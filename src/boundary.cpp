@@ -524,6 +524,11 @@ class BoundaryFront {
     if (lo > 0 && d2 < lo * lo) {
       return p.r + o.r + margin_ - std::sqrt(d2);
     }
+    return depth_exact(p, o);
+  }
+
+  // Out of line, so that the scan loops keep the disks they test in registers (see front.cpp).
+  [[gnu::noinline, gnu::cold]] double depth_exact(const Probe& p, const Node& o) {
     ++stats_.exact_checks;
     return disks_closer_than_exact({p.x, p.y}, p.r, {o.x, o.y}, o.r, margin_) ? 0x1p-1000 : -1;
   }
