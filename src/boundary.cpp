@@ -59,6 +59,7 @@
 #include <numbers>
 
 #include "cell_grid.hpp"
+#include "huge_pages.hpp"
 #include "overlap.hpp"
 
 namespace frontpack::detail {
@@ -1054,7 +1055,7 @@ class BoundaryFront {
   std::vector<Wall> walls_;
   std::vector<Corner> corners_;  // node i < corners_.size() is reflex vertex i (radius 0)
   std::vector<Point> corner_at_;
-  std::vector<Node> nodes_;
+  HugeVector<Node> nodes_;
 
   std::vector<Gap> fifo_;
   std::vector<Gap> wall_fifo_;  // gaps on a wall or a reflex vertex (grows with the perimeter only)
@@ -1064,7 +1065,7 @@ class BoundaryFront {
   std::array<std::array<std::uint64_t, kMaskWords>, 2> mask_{};  // bit k of mask_[s]: voids_[s][k] not empty
 
   CellGrid grid_;
-  std::vector<std::int32_t> head_cell_;
+  HugeVector<std::int32_t> head_cell_;
   std::vector<std::uint32_t> wall_begin_, fill_at_;
   std::vector<std::int32_t> wall_ids_;
   std::vector<Bounds> tree_;             // the wall tree (build_wall_tree)

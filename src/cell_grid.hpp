@@ -135,9 +135,9 @@ class RadiusClasses {
 
 /// Frees a vector's memory (clear() keeps it): the generators free their working arrays before
 /// copying the disks out, so that the peak holds the disks and the output only.
-template <class T>
-void release(std::vector<T>& v) {
-  std::vector<T>().swap(v);
+template <class T, class A>
+void release(std::vector<T, A>& v) {
+  std::vector<T, A>().swap(v);
 }
 
 }  // namespace frontpack::detail

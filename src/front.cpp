@@ -24,6 +24,7 @@
 #include <numbers>
 
 #include "cell_grid.hpp"
+#include "huge_pages.hpp"
 #include "overlap.hpp"
 
 namespace frontpack::detail {
@@ -721,15 +722,15 @@ class Front {
   double ox_ = 0;
   double oy_ = 0;
 
-  std::vector<Node> nodes_;
-  std::vector<std::int32_t> next_, prev_;
-  bool list_ = false;                        // keep the list below (closed form, elongated box)
-  std::vector<std::int32_t> anext_, aprev_;  // the active segments, in front order
+  HugeVector<Node> nodes_;
+  HugeVector<std::int32_t> next_, prev_;
+  bool list_ = false;                       // keep the list below (closed form, elongated box)
+  HugeVector<std::int32_t> anext_, aprev_;  // the active segments, in front order
   std::size_t active_ = 0;
   std::size_t front_size_ = 0;
 
   CellGrid grid_;
-  std::vector<std::int32_t> head_;
+  HugeVector<std::int32_t> head_;
 
   struct VoidSeg {
     std::int32_t a, b;
