@@ -18,7 +18,9 @@
 // moves inwards layer by layer from every ring at once, and fronts that meet need no merging: a
 // candidate that overlaps an element d of the other front is moved to touch d and one of its
 // parents instead (the paper's cases (b)-(d), decided by geometry instead of list order), which
-// closes the seam with tangent disks.
+// closes the seam with tangent disks. A gap whose first disk has since been paired with another
+// second element, or its second disk with another first one, has been overtaken (stale()): it is
+// kept as a void instead of being tried.
 //
 // Voids. A gap where the drawn disk does not fit is not thrown away: it is kept in a bucket by the
 // most it can take (log-spaced radius classes between rmin and rmax): the radius that failed there,
@@ -85,7 +87,7 @@ class BoundaryFront {
   struct Node {
     double x, y, r;
     std::int32_t cell_next;
-    std::int32_t pad;
+    std::int32_t after;  // the second element of the last front gap with this disk first (stale())
   };
   struct Wall {
     double ax, ay, bx, by;  // a -> b, the domain on the left
@@ -120,6 +122,7 @@ class BoundaryFront {
     const double estimate = estimate_disks(box, *req.radii);
     const auto reserve = static_cast<std::size_t>(std::min(estimate * 1.3 + 64, 1e9));
     nodes_.reserve(reserve);
+    before_.reserve(reserve);
     setup_walls();
     setup_grid();
     build_wall_tree();
@@ -160,6 +163,12 @@ class BoundaryFront {
           fifo_.erase(fifo_.begin(), fifo_.begin() + static_cast<std::ptrdiff_t>(head_));
           head_ = 0;
         }
+        if (stale(g)) {
+          if (req_.fill_voids) {
+            push_void(g, kClasses - 1, kNone);
+          }
+          continue;
+        }
       } else {
         // The front is done and no void can take r. If the walls could not start a front (a
         // boundary rougher than the smallest disk: nothing fits in its corners) and the polygon
@@ -191,6 +200,7 @@ class BoundaryFront {
         release(bucket);
       }
     }
+    release(before_);
     release(head_cell_);
     release(wall_begin_);
     release(wall_ids_);
@@ -202,9 +212,26 @@ class BoundaryFront {
 
  private:
   [[nodiscard]] std::size_t placed() const noexcept { return nodes_.size() - corners_.size() + out_.size(); }
+  // Whether front gap g has been overtaken: a later gap paired its first disk with another second
+  // element, or its second disk with another first one. A disk placed since then, touching one of
+  // them on this side, has covered the gap (in the paper's list, g's segment was cut), so its first
+  // position is taken. It is kept as a void instead, for the smaller radii that may still fit.
+  // (Two thirds of the front's gaps used to fail all their moves; without the overtaken ones the
+  // 1M-disk square needs 12% fewer overlap scans, and the density moves less than from seed to
+  // seed.)
+  [[nodiscard]] bool stale(Gap g) const noexcept {
+    return (is_disk(g.a) && nodes_[static_cast<std::size_t>(g.a)].after != g.b) ||
+           (is_disk(g.b) && before_[static_cast<std::size_t>(g.b)] != g.a);
+  }
   [[nodiscard]] bool fifo_empty() const noexcept { return head_ == fifo_.size() && wall_head_ == wall_fifo_.size(); }
   [[nodiscard]] bool on_wall(std::int32_t e) const noexcept { return is_wall(e) || is_corner(e); }
   void push_gap(Gap g) {
+    if (is_disk(g.a)) {
+      nodes_[static_cast<std::size_t>(g.a)].after = g.b;
+    }
+    if (is_disk(g.b)) {
+      before_[static_cast<std::size_t>(g.b)] = g.a;
+    }
     if (on_wall(g.a) || on_wall(g.b)) {
       wall_fifo_.push_back(g);
     } else {
@@ -384,7 +411,8 @@ class BoundaryFront {
   std::int32_t add_node(double x, double y, double r) {
     const auto id = static_cast<std::int32_t>(nodes_.size());
     const std::size_t c = cell_of(x, y);
-    nodes_.push_back(Node{x, y, r, head_cell_[c], 0});
+    nodes_.push_back(Node{x, y, r, head_cell_[c], kNone});
+    before_.push_back(kNone);
     head_cell_[c] = id;
     return id;
   }
@@ -1056,6 +1084,7 @@ class BoundaryFront {
   std::vector<Corner> corners_;  // node i < corners_.size() is reflex vertex i (radius 0)
   std::vector<Point> corner_at_;
   HugeVector<Node> nodes_;
+  HugeVector<std::int32_t> before_;  // per disk: the first element of the last front gap with it second
 
   std::vector<Gap> fifo_;
   std::vector<Gap> wall_fifo_;  // gaps on a wall or a reflex vertex (grows with the perimeter only)
