@@ -150,7 +150,7 @@ class Front {
 
   [[nodiscard]] std::size_t placed() const noexcept { return nodes_.size() - kFirstDisk + out_.size(); }
 
-  std::int32_t add_node(double x, double y, double r) {
+  [[gnu::always_inline]] std::int32_t add_node(double x, double y, double r) {
     const auto id = static_cast<std::int32_t>(nodes_.size());
     std::int32_t link_to = kNone;
     if (id >= kFirstDisk) {
@@ -236,9 +236,13 @@ class Front {
     const double y = p.y;
     const double r = p.r;
     if constexpr (Open) {
-      for (const std::int32_t w : {kLeft, kBottom, kRight}) {
-        if (w != c && w != n && crosses_wall(w, x, y, r)) {
-          return true;
+      const bool clear_of_walls =
+          x - r >= box_.xmin + band_ && x + r <= box_.xmax - band_ && y - r >= box_.ymin + band_;
+      if (!clear_of_walls) {  // most candidates are: one test for the three walls
+        for (const std::int32_t w : {kLeft, kBottom, kRight}) {
+          if (w != c && w != n && crosses_wall(w, x, y, r)) {
+            return true;
+          }
         }
       }
     }
