@@ -165,7 +165,7 @@ class BoundaryFront {
         }
         if (stale(g)) {
           if (req_.fill_voids) {
-            push_void(g, kClasses - 1, kNone);
+            push_void(g, kClasses - 1, overtaker(g));
           }
           continue;
         }
@@ -222,6 +222,13 @@ class BoundaryFront {
   [[nodiscard]] bool stale(Gap g) const noexcept {
     return (is_disk(g.a) && nodes_[static_cast<std::size_t>(g.a)].after != g.b) ||
            (is_disk(g.b) && before_[static_cast<std::size_t>(g.b)] != g.a);
+  }
+  // The element that overtook stale gap g: its first disk's new partner, else its second's.
+  [[nodiscard]] std::int32_t overtaker(Gap g) const noexcept {
+    if (is_disk(g.a) && nodes_[static_cast<std::size_t>(g.a)].after != g.b) {
+      return nodes_[static_cast<std::size_t>(g.a)].after;
+    }
+    return before_[static_cast<std::size_t>(g.b)];
   }
   [[nodiscard]] bool fifo_empty() const noexcept { return head_ == fifo_.size() && wall_head_ == wall_fifo_.size(); }
   [[nodiscard]] bool on_wall(std::int32_t e) const noexcept { return is_wall(e) || is_corner(e); }
