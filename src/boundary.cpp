@@ -134,11 +134,11 @@ class BoundaryFront {
   FrontResult run() {
     FrontResult result;
     double r = draw();
+    int cls = class_of(r);  // r's void class (r stays until it is placed)
     for (;;) {
       if (control_.stop(placed(), area_, result)) {
         break;
       }
-      const int cls = class_of(r);
       Gap g{kNone, kNone};
       // Voids first, those on a rough wall before the others, the tightest class whose radii all
       // exceed r, the most recent void in it.
@@ -178,6 +178,7 @@ class BoundaryFront {
         if (seed(r)) {
           area_ += r * r;
           r = draw();
+          cls = class_of(r);
           continue;
         }
         break;
@@ -185,6 +186,7 @@ class BoundaryFront {
       if (try_gap(g, r, k >= 0)) {
         area_ += r * r;
         r = draw();
+        cls = class_of(r);
       } else if (req_.fill_voids && cls > 0 && !hopeless_) {
         // r did not fit: the gap may still take a smaller disk, at most as large as the pocket
         // between its elements and the disk in the way.
