@@ -88,6 +88,25 @@ void BM_LoadWkt(benchmark::State& state) {
 }
 BENCHMARK(BM_LoadWkt)->Arg(10'000)->Arg(100'000)->Unit(benchmark::kMillisecond);
 
+// A star of n spikes alternately at radius 1 and 2: its edges fan around the unit disk, so their
+// boxes meet in about n^2 / 22 pairs though no two edges meet. Validation's worst case for the
+// box pass; the sweep (validate.cpp, edges_disjoint) decides it.
+void BM_ValidateStar(benchmark::State& state) {
+  const auto n = static_cast<std::size_t>(state.range(0));
+  std::vector<fp::Point> ring;
+  for (std::size_t k = 0; k < n; ++k) {
+    const double t = 2 * std::numbers::pi * static_cast<double>(k) / static_cast<double>(n);
+    const double r = k % 2 == 0 ? 1.0 : 2.0;
+    ring.push_back({r * std::cos(t), r * std::sin(t)});
+  }
+  for (auto _ : state) {
+    fp::Domain d = fp::Domain::from_rings(ring);
+    benchmark::DoNotOptimize(d);
+  }
+  state.SetItemsProcessed(state.iterations() * state.range(0));
+}
+BENCHMARK(BM_ValidateStar)->Arg(50'000)->Arg(200'000)->Unit(benchmark::kMillisecond);
+
 void BM_ContainsBatch(benchmark::State& state) {
   const fp::Domain d = fp::Domain::from_wkt(big_polygon_wkt(static_cast<std::size_t>(state.range(0)), 16));
   const std::vector<fp::Disk> disks = disks_over(d.bbox(), static_cast<std::size_t>(state.range(1)));
