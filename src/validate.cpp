@@ -9,10 +9,8 @@
 // region, as in a star with thousands of spikes) and none of them has shown a problem or a touch,
 // a sweep (CGAL::do_curves_intersect, O(n log n)) decides whether any pair would.
 
-#include <CGAL/Arr_non_caching_segment_traits_2.h>
 #include <CGAL/Bbox_2.h>
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
-#include <CGAL/Surface_sweep_2_algorithms.h>
 #include <CGAL/box_intersection_d.h>
 
 #include <algorithm>
@@ -24,6 +22,7 @@
 #include <tuple>
 #include <vector>
 
+#include "edge_sweep.hpp"
 #include "exact.hpp"
 #include "format.hpp"
 #include "ring_set.hpp"
@@ -315,16 +314,7 @@ class Validator {
     if (std::adjacent_find(at.begin(), at.end()) != at.end()) {
       return false;
     }
-    using EK = CGAL::Exact_predicates_exact_constructions_kernel;
-    std::vector<EK::Segment_2> segments;
-    segments.reserve(rs_.v.size());
-    for (std::uint32_t e = 0; e < rs_.v.size(); ++e) {
-      const Point a = rs_.v[e];
-      const Point b = rs_.v[rs_.next[e]];
-      segments.emplace_back(EK::Point_2(a.x, a.y), EK::Point_2(b.x, b.y));
-    }
-    CGAL::Arr_non_caching_segment_traits_2<EK> traits;
-    return !CGAL::do_curves_intersect(segments.begin(), segments.end(), traits);
+    return edge_interiors_disjoint(rs_.v, rs_.next);
   }
   static std::size_t pair_budget(std::size_t edges) { return 64 * edges + (std::size_t{1} << 20); }
 
