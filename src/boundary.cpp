@@ -115,6 +115,7 @@ class BoundaryFront {
     rmin_ = req.radii->min();
     rmax_ = req.radii->max();
     clearance_ = req.clearance;
+    scale_ = LengthScale(rmax_);
     margin_ = clearance_ / 2;
     band_ = clearance_ / 4;
     classes_ = RadiusClasses<kClasses>(rmin_, rmax_);
@@ -435,7 +436,7 @@ class BoundaryFront {
     if (!is_wall(a) && !is_wall(b)) {
       const Node& an = nodes_[static_cast<std::size_t>(a)];
       const Node& bn = nodes_[static_cast<std::size_t>(b)];
-      return tangent_to_two(an.x, an.y, an.r + g, bn.x, bn.y, bn.r + g, /*left=*/true, px, py);
+      return tangent_to_two(an.x, an.y, an.r + g, bn.x, bn.y, bn.r + g, /*left=*/true, scale_, px, py);
     }
     if (is_wall(a) && is_wall(b)) {
       // Where the two walls' lines, moved in by g, cross.
@@ -698,15 +699,19 @@ class BoundaryFront {
     const Node& nb = nodes_[static_cast<std::size_t>(b)];
     const Node& nd = nodes_[static_cast<std::size_t>(d)];
     // Relative to a's centre: |p|^2 = (ra + rho)^2 and, subtracting, c_i . p = alpha_i + beta_i rho.
-    const double bx = nb.x - na.x;
-    const double by = nb.y - na.y;
-    const double dx = nd.x - na.x;
-    const double dy = nd.y - na.y;
-    const double ra = na.r;
-    const double alpha_b = (bx * bx + by * by - nb.r * nb.r + ra * ra) / 2;
-    const double alpha_d = (dx * dx + dy * dy - nd.r * nd.r + ra * ra) / 2;
-    const double beta_b = ra - nb.r;
-    const double beta_d = ra - nd.r;
+    // At the scale of rmax (scale_): the degeneracy test below compares fourth powers of lengths.
+    const double k = scale_.k;
+    const double bx = (nb.x - na.x) * k;
+    const double by = (nb.y - na.y) * k;
+    const double dx = (nd.x - na.x) * k;
+    const double dy = (nd.y - na.y) * k;
+    const double ra = na.r * k;
+    const double rb = nb.r * k;
+    const double rd = nd.r * k;
+    const double alpha_b = (bx * bx + by * by - rb * rb + ra * ra) / 2;
+    const double alpha_d = (dx * dx + dy * dy - rd * rd + ra * ra) / 2;
+    const double beta_b = ra - rb;
+    const double beta_d = ra - rd;
     const double det = bx * dy - by * dx;
     const double scale = (bx * bx + by * by) * (dx * dx + dy * dy);
     if (!(det * det > 1e-12 * scale)) {
@@ -717,8 +722,9 @@ class BoundaryFront {
     const double vx = (beta_b * dy - beta_d * by) / det;
     const double vy = (bx * beta_d - dx * beta_b) / det;
     // On the left of a -> b: the pocket, not the circle on the far side.
-    return smallest_root(ux, uy, vx, vy, ra,
-                         [&](double rho) { return bx * (uy + rho * vy) - by * (ux + rho * vx) > 0; });
+    const double rho =
+        smallest_root(ux, uy, vx, vy, ra, [&](double t) { return bx * (uy + t * vy) - by * (ux + t * vx) > 0; });
+    return rho < 0 ? rho : rho * scale_.inv_k;
   }
 
   // pocket() with one wall among the three: the circle of radius rho at distance rho from the
@@ -1082,6 +1088,7 @@ class BoundaryFront {
   Point origin_;
   double width_ = 0, height_ = 0;
   double rmin_ = 0, rmax_ = 0, clearance_ = 0, margin_ = 0, band_ = 0;
+  LengthScale scale_;  // for tangent_to_two
   RadiusClasses<kClasses> classes_;
   double area_ = 0;
   double polygon_area_ = 0;  // shoelace, for the seeding rule

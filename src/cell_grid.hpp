@@ -39,21 +39,27 @@ struct CellGrid {
     inv_side = 1.0 / side;
     nx = static_cast<std::size_t>(gw * inv_side) + 1;
     ny = static_cast<std::size_t>(gh * inv_side) + 1;
+    last_col_ = static_cast<double>(nx - 1);
+    last_row_ = static_cast<double>(ny - 1);
   }
 
   [[nodiscard]] std::size_t cells() const noexcept { return nx * ny; }
-  [[nodiscard]] std::int64_t col(double x) const noexcept { return clamp((x - x0) * inv_side, nx); }
-  [[nodiscard]] std::int64_t row(double y) const noexcept { return clamp((y - y0) * inv_side, ny); }
+  [[nodiscard]] std::int64_t col(double x) const noexcept { return clamp((x - x0) * inv_side, last_col_); }
+  [[nodiscard]] std::int64_t row(double y) const noexcept { return clamp((y - y0) * inv_side, last_row_); }
   [[nodiscard]] std::size_t cell_of(double x, double y) const noexcept {
     return static_cast<std::size_t>(row(y)) * nx + static_cast<std::size_t>(col(x));
   }
 
  private:
-  static std::int64_t clamp(double g, std::size_t n) noexcept {
+  double last_col_ = 0, last_row_ = 0;  // nx - 1, ny - 1
+
+  // g's cell index, clamped to [0, last]: compared before the conversion, which would be undefined
+  // for a huge or infinite g.
+  static std::int64_t clamp(double g, double last) noexcept {
     if (!(g > 0)) {
       return 0;  // also NaN
     }
-    return std::min(static_cast<std::int64_t>(g), static_cast<std::int64_t>(n) - 1);
+    return static_cast<std::int64_t>(g < last ? g : last);
   }
 };
 
@@ -70,14 +76,33 @@ struct Probe {
   }
 };
 
+/// A power of two that brings lengths of the order of `length` (a run's largest radius) to about 1.
+/// Multiplying by it rounds nothing, so a computation done at that scale and scaled back gives the
+/// same bits, but its squares and fourth powers neither overflow nor underflow at any scale the
+/// library accepts (lengths of 1e80 or 1e-80).
+struct LengthScale {
+  double k = 1;      // lengths are multiplied by this
+  double inv_k = 1;  // and the results by this
+  LengthScale() = default;
+  explicit LengthScale(double length) {
+    if (std::isfinite(length) && length > 0) {
+      const int e = std::clamp(std::ilogb(length), -1000, 1000);
+      k = std::ldexp(1.0, -e);
+      inv_k = std::ldexp(1.0, e);
+    }
+  }
+};
+
 /// The centre (px, py) of a disk touching two disks from outside: at distance ra from (ax, ay) and
 /// rb from (bx, by) (their radii plus the new one's, and the clearance), on the left of a -> b if
 /// `left`, else on the right. False if there is none (the disks are too far apart or one holds
-/// the other), or if the centres coincide.
-inline bool tangent_to_two(double ax, double ay, double ra, double bx, double by, double rb, bool left, double& px,
-                           double& py) noexcept {
-  const double dx = bx - ax;
-  const double dy = by - ay;
+/// the other), or if the centres coincide. The lengths are taken at `scale` (see LengthScale).
+inline bool tangent_to_two(double ax, double ay, double ra, double bx, double by, double rb, bool left,
+                           const LengthScale& scale, double& px, double& py) noexcept {
+  const double dx = (bx - ax) * scale.k;
+  const double dy = (by - ay) * scale.k;
+  ra *= scale.k;
+  rb *= scale.k;
   const double d2 = dx * dx + dy * dy;
   if (!(d2 > 0)) {
     return false;
@@ -88,11 +113,11 @@ inline bool tangent_to_two(double ax, double ay, double ra, double bx, double by
   // of each other, where normalising first takes two square roots in a row.
   const double q = ra * ra - rb * rb + d2;
   const double big_h = 4 * ra * ra * d2 - q * q;
-  if (!(big_h >= 0)) {
+  if (!(big_h >= 0 && big_h <= std::numeric_limits<double>::max())) {
     return false;
   }
   const double s = left ? std::sqrt(big_h) : -std::sqrt(big_h);
-  const double f = 0.5 / d2;
+  const double f = 0.5 / d2 * scale.inv_k;
   px = ax + (q * dx - s * dy) * f;
   py = ay + (q * dy + s * dx) * f;
   return true;

@@ -63,6 +63,7 @@ class Front {
     box_ = Box{0, 0, req.box.xmax - origin_.x, req.box.ymax - origin_.y};
     rmax_ = req.radii->max();
     clearance_ = req.clearance;
+    scale_ = LengthScale(rmax_);
     margin_ = clearance_ / 2;
     band_ = clearance_ / 4;
     window_ = req.window == 0 ? std::numeric_limits<std::size_t>::max() : req.window;
@@ -292,7 +293,7 @@ class Front {
       const Node& cn = nodes_[static_cast<std::size_t>(c)];
       const Node& nn = nodes_[static_cast<std::size_t>(n)];
       // Left (open form) or right (closed form) of c -> n.
-      return tangent_to_two(cn.x, cn.y, cn.r + gap, nn.x, nn.y, nn.r + gap, left, px, py);
+      return tangent_to_two(cn.x, cn.y, cn.r + gap, nn.x, nn.y, nn.r + gap, left, scale_, px, py);
     }
     if (is_wall(c) && is_wall(n)) {
       // A corner of two walls (Sec. 3: D1 in the corner of Bl and Bb).
@@ -719,6 +720,7 @@ class Front {
   Point origin_;
   Box box_;
   double rmax_ = 0;
+  LengthScale scale_;  // for tangent_to_two
   double clearance_ = 0;
   double margin_ = 0;
   double band_ = 0;

@@ -7,6 +7,8 @@
 
 #include <cstddef>
 #include <cstdlib>
+#include <limits>
+#include <memory>
 #include <new>
 #include <vector>
 
@@ -32,6 +34,9 @@ struct HugePageAllocator {
     const std::size_t bytes = n * sizeof(T);
 #if defined(__linux__)
     if (bytes >= kHuge) {
+      if (bytes > std::numeric_limits<std::size_t>::max() - kHuge) {
+        throw std::bad_alloc();  // the rounding up would wrap
+      }
       const std::size_t rounded = (bytes + kHuge - 1) / kHuge * kHuge;
       void* p = std::aligned_alloc(kHuge, rounded);
       if (p == nullptr) {

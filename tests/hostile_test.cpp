@@ -411,3 +411,38 @@ TEST(Hostile, StarWithCrowdedEdgeBoxesAndHolesSplittingIt) {
     EXPECT_EQ(e.kind(), fp::InvalidDomainError::Kind::disconnected_interior) << e.what();
   }
 }
+
+// Scaling the domain and the radii by a power of two scales the packing by it, bit for bit, at
+// 2^-266 and 2^266 (about 1e-80 and 1e80, within the accepted coordinates): the generators'
+// lengths are homogeneous, and tangent_to_two, whose terms are fourth powers of lengths, works at
+// the scale of rmax (LengthScale). Unscaled, those terms underflowed or overflowed there, and the
+// closed form placed under 1% of the disks.
+TEST(Hostile, ScalingByAPowerOfTwoScalesThePackingExactly) {
+  const fp::Ring unit{{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  const fp::Domain d = fp::Domain::from_rings(unit);
+  for (const int e : {-266, 266}) {
+    fp::Ring scaled;
+    for (const fp::Point p : unit) {
+      scaled.push_back({std::ldexp(p.x, e), std::ldexp(p.y, e)});
+    }
+    const fp::Domain ds = fp::Domain::from_rings(scaled);
+    for (const fp::Method m : {fp::Method::closed, fp::Method::open, fp::Method::boundary}) {
+      SCOPED_TRACE(std::string(fp::to_string(m)) + " at 2^" + std::to_string(e));
+      const fp::Packing p = fill(d, m, fp::Radii::uniform(0.005, 0.02));
+      const fp::Packing ps = fill(ds, m, fp::Radii::uniform(std::ldexp(0.005, e), std::ldexp(0.02, e)));
+      expect_certified(ds, ps);
+      ASSERT_GT(p.disks.size(), 1000U);
+      ASSERT_EQ(ps.disks.size(), p.disks.size());
+      std::size_t differ = 0;
+      for (std::size_t i = 0; i < p.disks.size(); ++i) {
+        const fp::Disk& a = p.disks[i];
+        const fp::Disk& b = ps.disks[i];
+        differ += b.centre.x != std::ldexp(a.centre.x, e) || b.centre.y != std::ldexp(a.centre.y, e) ||
+                          b.radius != std::ldexp(a.radius, e)
+                      ? 1
+                      : 0;
+      }
+      EXPECT_EQ(differ, 0U);
+    }
+  }
+}
