@@ -446,3 +446,24 @@ TEST(Hostile, ScalingByAPowerOfTwoScalesThePackingExactly) {
     }
   }
 }
+
+// The star with edge 0 laid along the x axis, from (1, 0) to (2, 0), and two vertices added after
+// the last, the first of them at (1.5, 0): the ring touches itself there, a vertex inside one of
+// its own edges, with no vertex in common and no crossing. Only the sweep's test for a point in an
+// edge's interior sends the check back to the pairwise pass, which names the pair.
+TEST(Hostile, StarWithCrowdedEdgeBoxesTouchingItselfInsideAnEdge) {
+  const std::size_t n = 20000;
+  fp::Ring ring = star(n);
+  ring[0] = {1, 0};
+  ring[1] = {2, 0};
+  ring.push_back({1.5, 0});      // vertex n, on edge 0
+  ring.push_back({1.2, -1e-4});  // below the axis, then back to vertex 0
+  try {
+    (void)fp::Domain::from_rings(ring);
+    ADD_FAILURE() << "a ring touching itself was accepted";
+  } catch (const fp::InvalidDomainError& e) {
+    EXPECT_EQ(e.kind(), fp::InvalidDomainError::Kind::self_intersection) << e.what();
+    EXPECT_NE(std::string(e.what()).find("touch at (1.5 0)"), std::string::npos) << e.what();
+    EXPECT_EQ(named_edges(e.what()), (std::pair<std::size_t, std::size_t>{0, n - 1})) << e.what();
+  }
+}
