@@ -363,6 +363,20 @@ fp::Ring star(std::size_t n) {
   return ring;
 }
 
+// A self-intersecting ring's refusal: its kind, a phrase its message must contain, and the pair
+// of edges it names.
+void expect_self_intersection(const fp::Ring& ring, const std::string& phrase,
+                              std::pair<std::size_t, std::size_t> edges) {
+  try {
+    (void)fp::Domain::from_rings(ring);
+    ADD_FAILURE() << "a self-intersecting ring was accepted";
+  } catch (const fp::InvalidDomainError& e) {
+    EXPECT_EQ(e.kind(), fp::InvalidDomainError::Kind::self_intersection) << e.what();
+    EXPECT_NE(std::string(e.what()).find(phrase), std::string::npos) << e.what();
+    EXPECT_EQ(named_edges(e.what()), edges) << e.what();
+  }
+}
+
 }  // namespace
 
 // Beyond a budget of box pairs with nothing found, a sweep decides that no two edges meet
@@ -385,14 +399,7 @@ TEST(Hostile, StarWithCrowdedEdgeBoxesNamesItsCrossing) {
   fp::Ring ring = star(n);
   const double t = 2 * std::numbers::pi * 3.5 / static_cast<double>(n);
   ring[1] = {2 * std::cos(t), 2 * std::sin(t)};
-  try {
-    (void)fp::Domain::from_rings(ring);
-    ADD_FAILURE() << "a self-crossing star was accepted";
-  } catch (const fp::InvalidDomainError& e) {
-    EXPECT_EQ(e.kind(), fp::InvalidDomainError::Kind::self_intersection) << e.what();
-    EXPECT_NE(std::string(e.what()).find(" cross"), std::string::npos) << e.what();
-    EXPECT_EQ(named_edges(e.what()), (std::pair<std::size_t, std::size_t>{0, 2})) << e.what();
-  }
+  expect_self_intersection(ring, " cross", {0, 2});
 }
 
 // Two holes in the star, each touching it at one of its vertices and the other at the origin:
@@ -458,12 +465,5 @@ TEST(Hostile, StarWithCrowdedEdgeBoxesTouchingItselfInsideAnEdge) {
   ring[1] = {2, 0};
   ring.push_back({1.5, 0});      // vertex n, on edge 0
   ring.push_back({1.2, -1e-4});  // below the axis, then back to vertex 0
-  try {
-    (void)fp::Domain::from_rings(ring);
-    ADD_FAILURE() << "a ring touching itself was accepted";
-  } catch (const fp::InvalidDomainError& e) {
-    EXPECT_EQ(e.kind(), fp::InvalidDomainError::Kind::self_intersection) << e.what();
-    EXPECT_NE(std::string(e.what()).find("touch at (1.5 0)"), std::string::npos) << e.what();
-    EXPECT_EQ(named_edges(e.what()), (std::pair<std::size_t, std::size_t>{0, n - 1})) << e.what();
-  }
+  expect_self_intersection(ring, "touch at (1.5 0)", {0, n - 1});
 }
