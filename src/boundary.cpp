@@ -997,6 +997,19 @@ class BoundaryFront {
     }
   }
 
+  // Whether the pocket behind two disk parents x and y is worth keeping as a void. A front gap's
+  // disks touch; parents farther apart come from a cut (cases (b)-(d)), and behind them lies the
+  // element the cut replaced. Their pocket rarely takes a disk, and beyond 4 rmin almost never:
+  // on the 3 x 3 square such voids were tried 178k times for 3k disks (1 in 67k beyond 8 rmin),
+  // against 10% of the tries behind touching parents.
+  [[nodiscard]] bool worth_a_void(std::int32_t x, std::int32_t y) const noexcept {
+    const Node& a = nodes_[static_cast<std::size_t>(x)];
+    const Node& b = nodes_[static_cast<std::size_t>(y)];
+    const double dx = a.x - b.x;
+    const double dy = a.y - b.y;
+    const double reach = a.r + b.r + 4 * rmin_;
+    return dx * dx + dy * dy < reach * reach;
+  }
   bool try_gap(Gap g, double r, bool in_void) {
     std::int32_t x = g.a;
     std::int32_t y = g.b;
@@ -1040,12 +1053,12 @@ class BoundaryFront {
         push_gap(Gap{n, y});
         if (req_.fill_voids) {
           // The voids behind the new disk: the cusp between it, a wall parent and the other
-          // parent, or the pocket between two disk parents that do not touch.
+          // parent, or the pocket on the far side of two disk parents (worth_a_void()).
           if (is_wall(x) && !is_wall(y)) {
             push_void(Gap{n, x}, kClasses - 1, y);
           } else if (is_wall(y) && !is_wall(x)) {
             push_void(Gap{y, n}, kClasses - 1, x);
-          } else if (!is_wall(x) && !is_wall(y)) {
+          } else if (!is_wall(x) && !is_wall(y) && worth_a_void(x, y)) {
             push_void(Gap{y, x}, kClasses - 1, n);
           }
         }
