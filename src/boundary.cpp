@@ -18,16 +18,18 @@
 // moves inwards layer by layer from every ring at once, and fronts that meet need no merging: a
 // candidate that overlaps an element d of the other front is moved to touch d and one of its
 // parents instead (the paper's cases (b)-(d), decided by geometry instead of list order), which
-// closes the seam with tangent disks. A gap whose first disk has since been paired with another
-// second element, or its second disk with another first one, has been overtaken (stale()): it is
-// kept as a void instead of being tried.
+// closes the seam with tangent disks: one such move on a front gap in the interior, three on a gap
+// at a wall or a reflex vertex, one in a void there, none in a void in the interior. A gap whose
+// first disk has since been paired with another second element, or its second disk with another
+// first one, has been overtaken (stale()): it is kept as a void instead of being tried.
 //
 // Voids. A gap where the drawn disk does not fit is not thrown away: it is kept in a bucket by the
 // most it can take (log-spaced radius classes between rmin and rmax): the radius that failed there,
 // or less, the radius of the pocket between its two elements and the element in the way (pocket():
-// Apollonius' problem for three disks, two disks and a wall, or a disk and two walls). The cusps behind each new disk
-// (between it, a wall it touches and its other parent; or between two parents that do not touch)
-// are kept the same way. Each new radius is tried first in the voids, those on a rough wall first,
+// Apollonius' problem for three disks, two disks and a wall, or a disk and two walls). The cusps
+// behind each new disk (between it, a wall it touches and its other parent; or on the far side of
+// two parents that are disks or reflex vertices less than 4 rmin apart, worth_a_void()) are kept
+// the same way. Each new radius is tried first in the voids, those on a rough wall first,
 // in the tightest class whose radii all exceed it, then on the front. A rough wall is an edge
 // shorter than 2 rmax that meets a corner: the crevices of a boundary rough at the scale of the
 // disks take only the small ones, and without the priority these would go to the more recent voids
@@ -74,9 +76,9 @@ constexpr std::int32_t kNone = std::numeric_limits<std::int32_t>::min();
 // 0.836, 128 give 0.842); the cost per disk grows by about a tenth.
 constexpr int kClasses = 128;
 constexpr std::size_t kMaskWords = (kClasses + 63) / 64;  // words of a void mask (a bit per class)
-// Alternatives tried per front gap (cases (b)-(d)). One: a second placed 36k of the 188k disks it
-// tried on the 3 x 3 square, and without it those radii find the voids the failed gaps leave (the
-// densities do not move). None raises the interior by 0.01 but leaves the band of a rough
+// Alternatives tried per front gap in the interior (cases (b)-(d)). One: a second placed 36k of
+// the 188k disks it tried on the 3 x 3 square, and without it those radii find the voids the
+// failed gaps leave (the densities do not move). None raises the interior by 0.01 but leaves the band of a rough
 // boundary 0.02 below it (big_polygon).
 constexpr int kMoves = 1;
 constexpr int kWallMoves = 3;  // and per gap on a wall or a reflex vertex
@@ -1001,11 +1003,11 @@ class BoundaryFront {
     }
   }
 
-  // Whether the pocket behind two disk parents x and y is worth keeping as a void. A front gap's
-  // disks touch; parents farther apart come from a cut (cases (b)-(d)), and behind them lies the
-  // element the cut replaced. Their pocket rarely takes a disk, and beyond 4 rmin almost never:
-  // on the 3 x 3 square such voids were tried 178k times for 3k disks (1 in 67k beyond 8 rmin),
-  // against 10% of the tries behind touching parents.
+  // Whether the pocket behind parents x and y (disks or reflex vertices) is worth keeping as a
+  // void. A front gap's elements touch; parents farther apart come from a cut (cases (b)-(d)), and
+  // behind them lies the element the cut replaced. Their pocket rarely takes a disk, and beyond
+  // 4 rmin almost never: on the 3 x 3 square such voids were tried 178k times for 3k disks (1 in
+  // 67k beyond 8 rmin), against 10% of the tries behind touching parents.
   [[nodiscard]] bool worth_a_void(std::int32_t x, std::int32_t y) const noexcept {
     const Node& a = nodes_[static_cast<std::size_t>(x)];
     const Node& b = nodes_[static_cast<std::size_t>(y)];
@@ -1039,7 +1041,8 @@ class BoundaryFront {
         return false;  // outside the polygon's box, so outside the polygon
       }
       const Probe p = probe(px, py, r);
-      // At the last move, only whether anything is in the way matters.
+      // At the last move, only whether anything is in the way matters (but not at the first: its
+      // deepest element bounds the void the gap leaves).
       const std::int32_t d = move == moves && move > 0 ? deepest<true>(p) : deepest(p);
       if (d == kNone) {
         if (!supported_by(x, px, py) || !supported_by(y, px, py)) {
