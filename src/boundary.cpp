@@ -78,8 +78,8 @@ constexpr int kClasses = 128;
 constexpr std::size_t kMaskWords = (kClasses + 63) / 64;  // words of a void mask (a bit per class)
 // Alternatives tried per front gap in the interior (cases (b)-(d)). One: a second placed 36k of
 // the 188k disks it tried on the 3 x 3 square, and without it those radii find the voids the
-// failed gaps leave (the densities do not move). None raises the interior by 0.01 but leaves the band of a rough
-// boundary 0.02 below it (big_polygon).
+// failed gaps leave (the densities do not move). None raises the interior by 0.01 but leaves the
+// band of a rough boundary 0.02 below it (big_polygon).
 constexpr int kMoves = 1;
 constexpr int kWallMoves = 3;  // and per gap on a wall or a reflex vertex
 // and per void on a wall or a reflex vertex (interior voids get none: there a move placed 6% of
@@ -1016,6 +1016,7 @@ class BoundaryFront {
     const double reach = a.r + b.r + 4 * rmin_;
     return dx * dx + dy * dy < reach * reach;
   }
+
   bool try_gap(Gap g, double r, bool in_void) {
     std::int32_t x = g.a;
     std::int32_t y = g.b;
@@ -1060,7 +1061,7 @@ class BoundaryFront {
         push_gap(Gap{n, y});
         if (req_.fill_voids) {
           // The voids behind the new disk: the cusp between it, a wall parent and the other
-          // parent, or the pocket on the far side of two disk parents (worth_a_void()).
+          // parent, or the pocket on the far side of two node parents (worth_a_void()).
           if (is_wall(x) && !is_wall(y)) {
             push_void(Gap{n, x}, kClasses - 1, y);
           } else if (is_wall(y) && !is_wall(x)) {
