@@ -109,7 +109,9 @@ class BoundaryFront {
   };
   struct Gap {
     std::int32_t a, b;
-    std::int32_t behind = kNone;  // the element on the other side of a -> b (see try_gap())
+    // The element on the right of a -> b, the side the gap's disk will not be on (try_gap()):
+    // kNone for the corners' and seeds' gaps; a gap kept as a void keeps it.
+    std::int32_t behind = kNone;
   };
 
  public:
@@ -1063,19 +1065,21 @@ class BoundaryFront {
         push_gap(Gap{n, y, x});
         if (req_.fill_voids) {
           // The voids behind the new disk: the cusp between it, a wall parent and the other
-          // parent, or the pocket on the far side of two node parents (worth_a_void()).
+          // parent, or the pocket on the far side of two node parents, bounded by the element
+          // behind their gap if it was theirs, else kept only if worth_a_void(). Either way n
+          // lies behind the void.
           if (is_wall(x) && !is_wall(y)) {
             push_void(Gap{n, x}, kClasses - 1, y);
           } else if (is_wall(y) && !is_wall(x)) {
             push_void(Gap{y, n}, kClasses - 1, x);
           } else if (!is_wall(x) && !is_wall(y) && x == g.a && y == g.b && g.behind != kNone) {
-            // The gap's own elements, which touch: the pocket on their far side is the
-            // interstice between them and the element behind the gap (the third of the disks
-            // that made it), and that element bounds it. (Bounded by n, 173k first tries of such
-            // voids placed 80 disks on the 3 x 3 square.)
-            push_void(Gap{y, x}, kClasses - 1, g.behind);
+            // The gap's own elements, which touch: the pocket on their far side is bounded by
+            // the element behind the gap (the third of the elements that made it; with both
+            // touching the parents, their interstice). Bounded by n, on the near side, 173k first
+            // tries of such voids placed 80 disks on the 3 x 3 square.
+            push_void(Gap{y, x, n}, kClasses - 1, g.behind);
           } else if (!is_wall(x) && !is_wall(y) && worth_a_void(x, y)) {
-            push_void(Gap{y, x}, kClasses - 1, n);
+            push_void(Gap{y, x, n}, kClasses - 1, n);
           }
         }
         stats_.void_fills += in_void ? 1U : 0U;
