@@ -28,18 +28,18 @@
 // or less, the radius of the pocket between its two elements and the element in the way (pocket():
 // Apollonius' problem for three disks, two disks and a wall, or a disk and two walls). The cusps
 // behind each new disk (between it, a wall it touches and its other parent; or on the far side of
-// two parents that are disks or reflex vertices less than 4 rmin apart, worth_a_void()) are kept
-// the same way. Each new radius is tried first in the voids, those on a rough wall first,
-// in the tightest class whose radii all exceed it, then on the front. A rough wall is an edge
-// shorter than 2 rmax that meets a corner: the crevices of a boundary rough at the scale of the
-// disks take only the small ones, and without the priority these would go to the more recent voids
-// inside and leave the band sparse. (On smooth walls the priority overfills the band with small
-// disks: it is then denser than the interior, and the interior sparser.) Every drawn radius is
-// placed where it fits, so the size distribution is the requested one; the run ends when the front
-// is done and no void can take the radius drawn. A void that fails again moves to a smaller class;
-// one that can take nothing (the lowest class, or elements too far apart for the radius that
-// failed, so for every smaller one) is dropped, so every gap is tried a bounded number of times
-// and the run ends.
+// two parents that are disks or reflex vertices: bounded by the element behind their gap if it was
+// theirs, else kept only if they are less than 4 rmin apart, worth_a_void()) are kept the same way.
+// Each new radius is tried first in the voids, those on a rough wall first, in the tightest class
+// whose radii all exceed it, then on the front. A rough wall is an edge shorter than 2 rmax that
+// meets a corner: the crevices of a boundary rough at the scale of the disks take only the small
+// ones, and without the priority these would go to the more recent voids inside and leave the band
+// sparse. (On smooth walls the priority overfills the band with small disks: it is then denser than
+// the interior, and the interior sparser.) Every drawn radius is placed where it fits, so the size
+// distribution is the requested one; the run ends when the front is done and no void can take the
+// radius drawn. A void that fails again moves to a smaller class; one that can take nothing (the
+// lowest class, or elements too far apart for the radius that failed, so for every smaller one) is
+// dropped, so every gap is tried a bounded number of times and the run ends.
 //
 // Order. Gaps on a wall or a reflex vertex are taken before the others, so the first layer along
 // every wall is laid (from every corner) before the interior fronts arrive; without that, fronts
@@ -1010,7 +1010,7 @@ class BoundaryFront {
   // void. A front gap's elements touch; parents farther apart come from a cut (cases (b)-(d)), and
   // behind them lies the element the cut replaced. Their pocket rarely takes a disk, and beyond
   // 4 rmin almost never: on the 3 x 3 square such voids were tried 178k times for 3k disks (1 in
-  // 67k beyond 8 rmin), against 10% of the tries behind touching parents.
+  // 67k beyond 8 rmin), against 10% of the tries behind touching parents (at ecf6dd9).
   [[nodiscard]] bool worth_a_void(std::int32_t x, std::int32_t y) const noexcept {
     const Node& a = nodes_[static_cast<std::size_t>(x)];
     const Node& b = nodes_[static_cast<std::size_t>(y)];
@@ -1072,14 +1072,16 @@ class BoundaryFront {
             push_void(Gap{n, x}, kClasses - 1, y);
           } else if (is_wall(y) && !is_wall(x)) {
             push_void(Gap{y, n}, kClasses - 1, x);
-          } else if (!is_wall(x) && !is_wall(y) && x == g.a && y == g.b && g.behind != kNone) {
-            // The gap's own elements, which touch: the pocket on their far side is bounded by
-            // the element behind the gap (the third of the elements that made it; with both
-            // touching the parents, their interstice). Bounded by n, on the near side, 173k first
-            // tries of such voids placed 80 disks on the 3 x 3 square.
-            push_void(Gap{y, x, n}, kClasses - 1, g.behind);
-          } else if (!is_wall(x) && !is_wall(y) && worth_a_void(x, y)) {
-            push_void(Gap{y, x, n}, kClasses - 1, n);
+          } else if (!is_wall(x) && !is_wall(y)) {
+            if (x == g.a && y == g.b && g.behind != kNone) {
+              // The gap's own elements, which touch: the pocket on their far side is bounded by
+              // the element behind the gap (the third of the elements that made it; with both
+              // touching the parents, their interstice). Bounded by n, on the near side, 173k
+              // first tries of such voids placed 80 disks on the 3 x 3 square.
+              push_void(Gap{y, x, n}, kClasses - 1, g.behind);
+            } else if (worth_a_void(x, y)) {
+              push_void(Gap{y, x, n}, kClasses - 1, n);
+            }
           }
         }
         stats_.void_fills += in_void ? 1U : 0U;
