@@ -22,7 +22,7 @@
 // and where the other front left too little room the gap becomes a void (below), which the radii
 // that fit there close with tangent disks. A gap whose first disk has since been paired with
 // another second element, or its second disk with another first one, has been overtaken
-// (stale()): it is kept as a void instead of being tried.
+// (overtaker()): it is kept as a void instead of being tried.
 //
 // Voids. A gap where the drawn disk does not fit is not thrown away: it is kept in a bucket by the
 // most it can take (log-spaced radius classes between rmin and rmax): the radius that failed there,
@@ -102,7 +102,7 @@ class BoundaryFront {
   struct Node {
     double x, y, r;
     std::int32_t cell_next;
-    std::int32_t after;  // the second element of the last front gap with this disk first (stale())
+    std::int32_t after;  // the second element of the last front gap with this disk first (overtaker())
   };
   struct Wall {
     double ax, ay, bx, by;  // a -> b, the domain on the left
@@ -182,9 +182,9 @@ class BoundaryFront {
           fifo_.erase(fifo_.begin(), fifo_.begin() + static_cast<std::ptrdiff_t>(head_));
           head_ = 0;
         }
-        if (stale(g)) {
+        if (const std::int32_t o = overtaker(g); o != kNone) {
           if (req_.fill_voids) {
-            push_void(g, kClasses - 1, overtaker(g));
+            push_void(g, kClasses - 1, o);
           }
           continue;
         }
@@ -242,16 +242,18 @@ class BoundaryFront {
   // than from seed to seed.) The later pairing can also come from a void filled behind g (a fifth
   // of the cases with radii 0.002-0.02); testing its side as well changed neither the cost (-0.8%)
   // nor the densities beyond their noise, so it is not tested.
-  [[nodiscard]] bool stale(Gap g) const noexcept {
-    return (is_disk(g.a) && nodes_[static_cast<std::size_t>(g.a)].after != g.b) ||
-           (is_disk(g.b) && before_[static_cast<std::size_t>(g.b)] != g.a);
-  }
-  // The element that overtook stale gap g: its first disk's new partner, else its second's.
+  //
+  // Returns the element that overtook g (its first disk's new partner, else its second's), or
+  // kNone if g is still on the front. (Neither link is ever kNone once g was queued: pushing g
+  // set both.)
   [[nodiscard]] std::int32_t overtaker(Gap g) const noexcept {
     if (is_disk(g.a) && nodes_[static_cast<std::size_t>(g.a)].after != g.b) {
       return nodes_[static_cast<std::size_t>(g.a)].after;
     }
-    return before_[static_cast<std::size_t>(g.b)];
+    if (is_disk(g.b) && before_[static_cast<std::size_t>(g.b)] != g.a) {
+      return before_[static_cast<std::size_t>(g.b)];
+    }
+    return kNone;
   }
   [[nodiscard]] bool fifo_empty() const noexcept { return head_ == fifo_.size() && wall_head_ == wall_fifo_.size(); }
   [[nodiscard]] bool on_wall(std::int32_t e) const noexcept { return is_wall(e) || is_corner(e); }
@@ -1088,7 +1090,9 @@ class BoundaryFront {
             } else if (worth_a_void(x, y)) {
               // A pair from a move: bounded by the parent the move replaced, which lies on the
               // far side (bounded by n, 29k first tries of these voids on the 3 x 3 square placed
-              // nothing, 95% of them blocked by that parent).
+              // nothing, 95% of them blocked by that parent). After chained moves this is the
+              // gap's original parent, not the last one replaced: a looser bound. A seed pair's
+              // gap has no element behind it and no move: bounded by n.
               push_void(Gap{y, x, n}, kClasses - 1, x != g.a ? g.a : y != g.b ? g.b : n);
             }
           }
@@ -1099,7 +1103,7 @@ class BoundaryFront {
       if (move == 0) {
         blocker_ = d;
       }
-      if (move == 0 && moves == 0 && on_wall(d)) {
+      if (move == 0 && !walled && on_wall(d)) {
         moves = kWallCut;  // the boundary in the way: move to touch it
       }
       if (move == moves || d == x || d == y) {
