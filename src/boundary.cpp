@@ -115,9 +115,9 @@ class BoundaryFront {
   };
   struct Gap {
     std::int32_t a, b;
-    // The element on the right of a -> b, the side the gap's disk will not be on (try_gap()):
-    // kNone for the corners' and seeds' gaps; a gap kept as a void keeps it.
-    std::int32_t behind = kNone;
+    // A void's third element, the one that bounds it (push_void()): a disk that a and b touch
+    // no larger than the pocket between the three clears it. kNone on the front.
+    std::int32_t bound = kNone;
   };
 
  public:
@@ -257,13 +257,18 @@ class BoundaryFront {
   }
   [[nodiscard]] bool fifo_empty() const noexcept { return head_ == fifo_.size() && wall_head_ == wall_fifo_.size(); }
   [[nodiscard]] bool on_wall(std::int32_t e) const noexcept { return is_wall(e) || is_corner(e); }
-  void push_gap(Gap g) {
+  // Records gap g as the last one with its first disk first and its second disk second
+  // (overtaker()).
+  void link(Gap g) noexcept {
     if (is_disk(g.a)) {
       nodes_[static_cast<std::size_t>(g.a)].after = g.b;
     }
     if (is_disk(g.b)) {
       before_[static_cast<std::size_t>(g.b)] = g.a;
     }
+  }
+  void push_gap(Gap g) {
+    link(g);
     if (on_wall(g.a) || on_wall(g.b)) {
       wall_fifo_.push_back(g);
     } else {
@@ -862,13 +867,15 @@ class BoundaryFront {
 
   // Keeps gap g as a void for radii below class k, and below the pocket left by `blocker`.
   void push_void(Gap g, int k, std::int32_t blocker) {
-    if (blocker != kNone) {
-      const double cap = pocket(g.a, g.b, blocker);
-      if (cap >= 0) {
-        k = cap < rmin_ ? 0 : std::min(k, class_of(cap));
-      }
+    keep_void(g, k, blocker, blocker != kNone ? pocket(g.a, g.b, blocker) : -1);
+  }
+  // push_void() with the pocket `cap` already computed (-1: none).
+  void keep_void(Gap g, int k, std::int32_t blocker, double cap) {
+    if (cap >= 0) {
+      k = cap < rmin_ ? 0 : std::min(k, class_of(cap));
     }
     if (k > 0) {
+      g.bound = blocker;
       // Voids on a rough wall are kept apart and tried first.
       const std::size_t side =
           (is_wall(g.a) && rough_[wall_index(g.a)] != 0) || (is_wall(g.b) && rough_[wall_index(g.b)] != 0) ? 1 : 0;
@@ -1045,6 +1052,7 @@ class BoundaryFront {
       return false;
     }
     const bool walled = on_wall(x) || on_wall(y);
+    std::int32_t replaced = kNone;  // the parent the last move replaced
     int moves = walled ? (in_void ? kVoidMoves : kWallMoves) : kMoves;
     for (int move = 0; move <= moves; ++move) {
       slide(x, y, r, px, py);
@@ -1068,33 +1076,39 @@ class BoundaryFront {
           return false;
         }
         const std::int32_t n = add_node(px, py, r);
-        // n lies on the left of x -> y, so y lies behind the gap (x, n) and x behind (n, y).
-        push_gap(Gap{x, n, y});
-        push_gap(Gap{n, y, x});
+        if (in_void && !walled && g.bound != kNone) {
+          // A disk in a void leaves two smaller pockets, between it, a parent and the element
+          // that bounded the void: kept as voids, not queued on the front, if that element
+          // still bounds them below rmax. (Queued, 335k of them were tried on the 3 x 3 square
+          // a layer later, when their neighbourhood had left the cache, and 10% took a disk.)
+          for (const Gap c : {Gap{x, n}, Gap{n, y}}) {
+            const double cap = c.a == g.bound || c.b == g.bound ? -1 : pocket(c.a, c.b, g.bound);
+            if (cap >= 0 && cap < rmax_) {
+              link(c);
+              keep_void(c, kClasses - 1, g.bound, cap);
+            } else {
+              push_gap(c);
+            }
+          }
+        } else {
+          push_gap(Gap{x, n});
+          push_gap(Gap{n, y});
+        }
+        if (req_.fill_voids && replaced != kNone && !is_wall(x) && !is_wall(y) && worth_a_void(x, y)) {
+          // The pocket on the far side of a pair from a move (cases (b)-(d)), bounded by the
+          // parent the last move replaced, which lies there (bounded by n, 29k first tries of
+          // these voids on the 3 x 3 square placed nothing, 95% of them blocked by that parent).
+          // (The pocket behind a pair that made a gap is not kept: bounded by the element behind
+          // their gap, 266k of them on the 3 x 3 square were tried 9.6k times, and the densities
+          // stayed the same without them.)
+          push_void(Gap{y, x}, kClasses - 1, replaced);
+        }
         if (req_.fill_voids) {
-          // The voids behind the new disk: the cusp between it, a wall parent and the other
-          // parent, or the pocket on the far side of two node parents, bounded by the element
-          // behind their gap if it was theirs, else kept only if worth_a_void() and bounded by
-          // the parent a move replaced. Either way n lies behind the void.
+          // The cusp between the new disk, a wall parent and the other parent.
           if (is_wall(x) && !is_wall(y)) {
             push_void(Gap{n, x}, kClasses - 1, y);
           } else if (is_wall(y) && !is_wall(x)) {
             push_void(Gap{y, n}, kClasses - 1, x);
-          } else if (!is_wall(x) && !is_wall(y)) {
-            if (x == g.a && y == g.b && g.behind != kNone) {
-              // The gap's own elements, which touch: the pocket on their far side is bounded by
-              // the element behind the gap (the third of the elements that made it; with both
-              // touching the parents, their interstice). Bounded by n, on the near side, 173k
-              // first tries of such voids placed 80 disks on the 3 x 3 square.
-              push_void(Gap{y, x, n}, kClasses - 1, g.behind);
-            } else if (worth_a_void(x, y)) {
-              // A pair from a move: bounded by the parent the move replaced, which lies on the
-              // far side (bounded by n, 29k first tries of these voids on the 3 x 3 square placed
-              // nothing, 95% of them blocked by that parent). After chained moves this is the
-              // gap's original parent, not the last one replaced: a looser bound. A seed pair's
-              // gap has no element behind it and no move: bounded by n.
-              push_void(Gap{y, x, n}, kClasses - 1, x != g.a ? g.a : y != g.b ? g.b : n);
-            }
           }
         }
         stats_.void_fills += in_void ? 1U : 0U;
@@ -1125,10 +1139,12 @@ class BoundaryFront {
       const double da = ok_a ? (ax - px) * (ax - px) + (ay - py) * (ay - py) : INFINITY;
       const double db = ok_b ? (bx - px) * (bx - px) + (by - py) * (by - py) : INFINITY;
       if (da <= db) {
+        replaced = y;
         y = d;
         px = ax;
         py = ay;
       } else {
+        replaced = x;
         x = d;
         px = bx;
         py = by;
