@@ -92,6 +92,7 @@ constexpr int kMoves = 0;
 constexpr int kWallCut = 1;
 constexpr int kWallMoves = 3;
 constexpr int kVoidMoves = 3;
+constexpr std::size_t kBlock = 16;       // cells per side of a block in the walled_ bitmap
 constexpr std::uint32_t kWallList = 16;  // a cell with more walls than this asks the wall tree
 constexpr std::size_t kLeafWalls = 4;    // walls per leaf of the wall tree
 // A vertex where the boundary turns by less than this (20 degrees) is no corner: the front does
@@ -225,6 +226,7 @@ class BoundaryFront {
     release(head_cell_);
     release(wall_begin_);
     release(wall_ids_);
+    release(walled_);
     for (std::size_t i = corners_.size(); i < nodes_.size(); ++i) {
       out_.push_back(Disk{{origin_.x + nodes_[i].x, origin_.y + nodes_[i].y}, nodes_[i].r});
     }
@@ -410,6 +412,22 @@ class BoundaryFront {
       }
     }
     std::vector<std::uint32_t>().swap(fill_at_);
+    // A bit per block of kBlock x kBlock cells: whether any of them has walls. Most probes lie in
+    // blocks without, and the bits of a whole front fit in the first-level cache, unlike the
+    // cells' lists (a tenth of the front's cache misses were reading them).
+    blocks_x_ = (grid_.nx + kBlock - 1) / kBlock;
+    const std::size_t blocks = blocks_x_ * ((grid_.ny + kBlock - 1) / kBlock);
+    walled_.assign((blocks + 63) / 64, 0);
+    for (std::size_t c = 0; c < grid_.cells(); ++c) {
+      if (wall_begin_[c + 1] > wall_begin_[c]) {
+        const std::size_t b = block_of(c / grid_.nx, c % grid_.nx);
+        walled_[b / 64] |= std::uint64_t{1} << (b % 64);
+      }
+    }
+  }
+
+  [[nodiscard]] std::size_t block_of(std::size_t row, std::size_t col) const noexcept {
+    return row / kBlock * blocks_x_ + col / kBlock;
   }
 
   // Whether segment wl meets the box [x0, x1] x [y0, y1] (Liang-Barsky clipping; conservative
@@ -626,9 +644,14 @@ class BoundaryFront {
   std::int32_t deepest(const Probe& p) {
     std::int32_t best = kNone;
     double best_depth = 0;
-    const std::size_t home = cell_of(p.x, p.y);
+    const auto home_col = static_cast<std::size_t>(col(p.x));
+    const auto home_row = static_cast<std::size_t>(row(p.y));
+    const std::size_t home = home_row * grid_.nx + home_col;
+    const std::size_t block = block_of(home_row, home_col);
     const double reach = p.r + margin_;
-    if (wall_begin_[home + 1] - wall_begin_[home] > kWallList) {
+    if ((walled_[block / 64] >> (block % 64) & 1) == 0) {
+      // No walls within reach.
+    } else if (wall_begin_[home + 1] - wall_begin_[home] > kWallList) {
       // A finely divided boundary: the nearest wall, from the tree, is the deepest one.
       double d2 = reach * reach;
       const std::int32_t e = nearest_wall(p.x, p.y, d2);
@@ -744,10 +767,11 @@ class BoundaryFront {
     if (!(det * det > 1e-12 * scale)) {
       return -1;
     }
-    const double ux = (alpha_b * dy - alpha_d * by) / det;
-    const double uy = (bx * alpha_d - dx * alpha_b) / det;
-    const double vx = (beta_b * dy - beta_d * by) / det;
-    const double vy = (bx * beta_d - dx * beta_b) / det;
+    const double inv = 1 / det;
+    const double ux = (alpha_b * dy - alpha_d * by) * inv;
+    const double uy = (bx * alpha_d - dx * alpha_b) * inv;
+    const double vx = (beta_b * dy - beta_d * by) * inv;
+    const double vy = (bx * beta_d - dx * beta_b) * inv;
     // On the left of a -> b: the pocket, not the circle on the far side.
     const double rho =
         smallest_root(ux, uy, vx, vy, ra, [&](double t) { return bx * (uy + t * vy) - by * (ux + t * vx) > 0; });
@@ -783,10 +807,11 @@ class BoundaryFront {
     if (!(det * det > 1e-12 * (cx * cx + cy * cy))) {
       return -1;
     }
-    const double ux = (alpha * wl.ny - off * cy) / det;
-    const double uy = (cx * off - wl.nx * alpha) / det;
-    const double vx = (beta * wl.ny - 1 * cy) / det;
-    const double vy = (cx * 1 - wl.nx * beta) / det;
+    const double inv = 1 / det;
+    const double ux = (alpha * wl.ny - off * cy) * inv;
+    const double uy = (cx * off - wl.nx * alpha) * inv;
+    const double vx = (beta * wl.ny - cy) * inv;
+    const double vy = (cx - wl.nx * beta) * inv;
     return smallest_root(ux, uy, vx, vy, ri, [](double) { return true; });
   }
 
@@ -858,8 +883,9 @@ class BoundaryFront {
       const double disc = qb * qb - 4 * qa * qc;
       if (disc >= 0) {
         const double sq = std::sqrt(disc);
-        consider((-qb + sq) / (2 * qa));
-        consider((-qb - sq) / (2 * qa));
+        const double half = 0.5 / qa;
+        consider((-qb + sq) * half);
+        consider((-qb - sq) * half);
       }
     }
     return best;
@@ -1186,6 +1212,8 @@ class BoundaryFront {
   HugeVector<std::int32_t> head_cell_;
   std::vector<std::uint32_t> wall_begin_, fill_at_;
   std::vector<std::int32_t> wall_ids_;
+  std::vector<std::uint64_t> walled_;  // a bit per block of cells: any walls (setup_grid())
+  std::size_t blocks_x_ = 1;
   std::vector<Bounds> tree_;             // the wall tree (build_wall_tree)
   std::vector<std::size_t> ring_first_;  // the first wall of each ring
   std::vector<std::uint8_t> rough_;
