@@ -7,7 +7,7 @@
 // "Core" times the advancing front alone (FillStats::seconds_front, manual time); "Pipeline"
 // times fill() end to end: generation + exact cull + CGAL overlap pass. The last argument is
 // FillOptions::fill_voids: issue #3's figures are the paper's forms (0); issue #5's compare the
-// boundary method with them (Core/2/1 against Core/0/0).
+// boundary method with the open form (Core/2/1 against Core/1/0).
 #include <benchmark/benchmark.h>
 #include <sys/resource.h>
 

@@ -27,11 +27,12 @@
 // Voids. A gap where the drawn disk does not fit is not thrown away: it is kept in a bucket by the
 // most it can take (log-spaced radius classes between rmin and rmax): the radius that failed there,
 // or less, the radius of the pocket between its two elements and the element in the way (pocket():
-// Apollonius' problem for three disks, two disks and a wall, or a disk and two walls). The cusps
-// behind each new disk (between it, a wall it touches and its other parent; or on the far side of
-// two parents that are disks or reflex vertices: bounded by the element behind their gap if it was
-// theirs, else kept only if they are less than 4 rmin apart, worth_a_void(), and bounded by the
-// parent a move replaced) are kept the same way.
+// Apollonius' problem for three disks, two disks and a wall, or a disk and two walls). A disk
+// placed in a void splits it: the two pockets between the new disk, one of its parents and the
+// void's bounding element are kept as voids the same way, not queued on the front, unless that
+// element leaves them room for rmax. Also kept: the cusp between a new disk, a wall it touches
+// and its other parent, and the pocket on the far side of two disk parents that a move brought
+// together (if less than 4 rmin apart, worth_a_void(); bounded by the parent the move replaced).
 // Each new radius is tried first in the voids, those on a rough wall first, in the tightest class
 // whose radii all exceed it, then on the front. A rough wall is an edge shorter than 2 rmax that
 // meets a corner: the crevices of a boundary rough at the scale of the disks take only the small
