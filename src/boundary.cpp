@@ -28,9 +28,10 @@
 // most it can take (log-spaced radius classes between rmin and rmax): the radius that failed there,
 // or less, the radius of the pocket between its two elements and the element in the way (pocket():
 // Apollonius' problem for three disks, two disks and a wall, or a disk and two walls). A disk
-// placed in a void splits it: the two pockets between the new disk, one of its parents and the
-// void's bounding element are kept as voids the same way, not queued on the front, unless that
-// element leaves them room for rmax. Also kept: the cusp between a new disk, a wall it touches
+// placed in a void away from the boundary, touching the void's own two elements, splits it: the
+// two pockets between the new disk, one of its parents and the void's bounding element are kept
+// as voids the same way, not queued on the front, unless that element bounds no pocket there or
+// leaves it room for rmax. Also kept: the cusp between a new disk, a wall it touches
 // and its other parent, and the pocket on the far side of two disk parents that a move brought
 // together (if less than 4 rmin apart, worth_a_void(); bounded by the parent the move replaced).
 // Each new radius is tried first in the voids, those on a rough wall first, in the tightest class
@@ -117,8 +118,9 @@ class BoundaryFront {
   };
   struct Gap {
     std::int32_t a, b;
-    // A void's third element, the one that bounds it (push_void()): a disk that a and b touch
-    // no larger than the pocket between the three clears it. kNone on the front.
+    // A void's third element, the one that bounds it (keep_void()): a disk that a and b touch
+    // no larger than the pocket between the three clears it. kNone on the front, and for a void
+    // kept without one.
     std::int32_t bound = kNone;
   };
 
@@ -1048,11 +1050,10 @@ class BoundaryFront {
     }
   }
 
-  // Whether the pocket behind parents x and y (disks or reflex vertices) is worth keeping as a
-  // void. A front gap's elements touch; parents farther apart come from a cut (cases (b)-(d)), and
-  // behind them lies the element the cut replaced. Their pocket rarely takes a disk, and beyond
-  // 4 rmin almost never: on the 3 x 3 square such voids were tried 178k times for 3k disks (1 in
-  // 67k beyond 8 rmin), against 10% of the tries behind touching parents (at ecf6dd9).
+  // Whether the pocket behind parents x and y (disks or reflex vertices) that a move (cases
+  // (b)-(d)) brought together is worth keeping as a void. Behind them lies the element the move
+  // replaced; their pocket rarely takes a disk, and beyond 4 rmin almost never: on the 3 x 3
+  // square such voids were tried 178k times for 3k disks (1 in 67k beyond 8 rmin, at ecf6dd9).
   [[nodiscard]] bool worth_a_void(std::int32_t x, std::int32_t y) const noexcept {
     const Node& a = nodes_[static_cast<std::size_t>(x)];
     const Node& b = nodes_[static_cast<std::size_t>(y)];
@@ -1103,11 +1104,13 @@ class BoundaryFront {
           return false;
         }
         const std::int32_t n = add_node(px, py, r);
-        if (in_void && !walled && g.bound != kNone) {
+        if (in_void && !walled && replaced == kNone && g.bound != kNone) {
           // A disk in a void leaves two smaller pockets, between it, a parent and the element
           // that bounded the void: kept as voids, not queued on the front, if that element
           // still bounds them below rmax. (Queued, 335k of them were tried on the 3 x 3 square
           // a layer later, when their neighbourhood had left the cache, and 10% took a disk.)
+          // Not after a move: the new parent can be a wall cut in, and pocket_at_wall() does
+          // not tell its sides apart.
           for (const Gap c : {Gap{x, n}, Gap{n, y}}) {
             const double cap = c.a == g.bound || c.b == g.bound ? -1 : pocket(c.a, c.b, g.bound);
             if (cap >= 0 && cap < rmax_) {
