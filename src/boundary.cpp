@@ -800,6 +800,25 @@ class BoundaryFront {
       j = b;
     }
     const Wall& wl = walls_[wall_index(w)];
+    if (ends(wl, j)) {
+      std::swap(i, j);
+    }
+    if (ends(wl, i)) {
+      // A reflex vertex at the wall's end (a gap at the corner, or the corner in its way): a
+      // circle touching the wall's line and passing through a point on it touches it there.
+      // Its centre is i + rho n, and it touches j from outside: |i + rho n - j| = rj + rho. (The
+      // general solution below meets this as a double root, which rounding turns into none.)
+      if (ends(wl, j)) {
+        return -1;
+      }
+      const Node& ni = nodes_[static_cast<std::size_t>(i)];
+      const Node& nj = nodes_[static_cast<std::size_t>(j)];
+      const double cx = nj.x - ni.x;
+      const double cy = nj.y - ni.y;
+      const double den = 2 * (wl.nx * cx + wl.ny * cy + nj.r);
+      const double rho = (cx * cx + cy * cy - nj.r * nj.r) / den;
+      return rho > 0 && std::isfinite(rho) ? rho : -1;
+    }
     const Node& ni = nodes_[static_cast<std::size_t>(i)];
     const Node& nj = nodes_[static_cast<std::size_t>(j)];
     // Relative to i's centre: |p|^2 = (ri + rho)^2; c . p = alpha + beta rho (c = cj - ci);
@@ -820,6 +839,16 @@ class BoundaryFront {
     const double vx = (beta * wl.ny - cy) * inv;
     const double vy = (cx - wl.nx * beta) * inv;
     return smallest_root(ux, uy, vx, vy, ri, [](double) { return true; });
+  }
+
+  // Whether node e is a reflex vertex at an end of wall wl (node coordinates and wall ends come
+  // from the same ring points, so equality is exact).
+  [[nodiscard]] bool ends(const Wall& wl, std::int32_t e) const noexcept {
+    if (!is_corner(e)) {
+      return false;
+    }
+    const Node& v = nodes_[static_cast<std::size_t>(e)];
+    return (v.x == wl.ax && v.y == wl.ay) || (v.x == wl.bx && v.y == wl.by);
   }
 
   // pocket() with two walls among the three (a crevice of a rough boundary, or a corner with a disk
