@@ -507,7 +507,9 @@ class BoundaryFront {
     const Node& dn = nodes_[static_cast<std::size_t>(wall_first ? b : a)];
     const double rd = dn.r + g;
     const double off = wl.nx * dn.x + wl.ny * dn.y - (wl.w + g);
-    const double s2 = rd * rd - off * off;
+    // A reflex vertex at the wall's end lies on its line: the disk touches the wall there, and
+    // s is 0 (computed, rounding made s2 negative about half the time, and the gap failed).
+    const double s2 = ends(wl, wall_first ? b : a) ? 0 : rd * rd - off * off;
     if (!(s2 >= 0)) {
       return false;
     }
@@ -1107,9 +1109,8 @@ class BoundaryFront {
     if (!tangent(x, y, r, px, py)) {
       // No disk this small touches both (too far apart, or one holds the other, or parallel
       // walls): no smaller one does either. The gap is not kept as a void for smaller radii,
-      // where it would fail the same way every time until the lowest class dropped it. (Not
-      // with a reflex vertex: one lies on its own walls' lines, where rounding decides.)
-      hopeless_ = !is_corner(x) && !is_corner(y);
+      // where it would fail the same way every time until the lowest class dropped it.
+      hopeless_ = true;
       return false;
     }
     const bool walled = on_wall(x) || on_wall(y);
