@@ -5,6 +5,7 @@
 // docs/density.md has the measured table (tools/density_table.py).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -165,6 +166,18 @@ TEST(BoundaryDensity, CombKsByAreaAtMost002) {
   expect_ks_target("comb.wkt");
 }
 
+// A ring of 12,083 vertices rough at the scale of the disks: most of its vertices are corners,
+// half of them reflex, and a band of crevices the size of the small disks.
+TEST(BoundaryDensity, BigPolygonInteriorAtLeast084) {
+  expect_interior_target("big_polygon.wkt");
+}
+TEST(BoundaryDensity, BigPolygonBandWithin002OfInterior) {
+  expect_band_target("big_polygon.wkt");
+}
+TEST(BoundaryDensity, BigPolygonKsByAreaAtMost002) {
+  expect_ks_target("big_polygon.wkt");
+}
+
 // Next to the walls the boundary method is denser than the paper's forms, which fill the
 // bounding box and cull what is not inside (same shape, radii and seed; about 10,000 disks).
 class BoundaryBand : public ::testing::TestWithParam<std::string> {};
@@ -184,6 +197,40 @@ TEST_P(BoundaryBand, DenserNearTheWallsThanClosedAndOpen) {
 INSTANTIATE_TEST_SUITE_P(Shapes, BoundaryBand,
                          ::testing::Values("plate_with_holes.wkt", "gear.wkt", "annulus.wkt", "comb.wkt"),
                          fp::test::ShapeTestName());
+
+// A saw of 100 teeth along the bottom of a strip: the tip of every tooth is a reflex vertex where
+// the boundary turns by 77 degrees, and the front starts there with a disk touching the tooth's
+// edge at the tip. The tip lies on the edge's line only up to rounding; before the touching
+// position was computed as the tip itself, a third of the tips got no disk on any seed.
+TEST(Boundary, EveryReflexCornerOfASawIsTouched) {
+  std::vector<fp::Point> ring;
+  std::vector<fp::Point> tips;
+  const int teeth = 100;
+  for (int i = 0; i < teeth; ++i) {
+    ring.push_back({0.1 * i, 0});
+    tips.push_back({0.1 * i + 0.05, 0.04});
+    ring.push_back(tips.back());
+  }
+  ring.push_back({0.1 * teeth, 0});
+  ring.push_back({0.1 * teeth, 0.5});
+  ring.push_back({0, 0.5});
+  const fp::Domain d = fp::Domain::from_rings(ring);
+  const double r = 0.005;
+  for (const std::uint64_t seed : {1ULL, 2ULL, 3ULL}) {
+    SCOPED_TRACE("seed " + std::to_string(seed));
+    const fp::Packing p = fill(d, fp::Method::boundary, fp::Radii::constant(r), seed);
+    expect_certified(d, p);
+    int untouched = 0;
+    for (const fp::Point& v : tips) {
+      double gap = INFINITY;  // of the disk nearest to touching v
+      for (const fp::Disk& k : p.disks) {
+        gap = std::min(gap, std::abs(std::hypot(k.centre.x - v.x, k.centre.y - v.y) - k.radius));
+      }
+      untouched += gap < 1e-9 ? 0 : 1;
+    }
+    EXPECT_EQ(untouched, 0) << "of " << teeth << " tooth tips";
+  }
+}
 
 // Hostile domains (as tests/hostile_test.cpp does for the paper's forms): each ends, certified.
 
