@@ -1098,7 +1098,7 @@ class BoundaryFront {
     return dx * dx + dy * dy < reach * reach;
   }
 
-  bool try_gap(Gap g, double r, bool in_void) {
+  bool try_gap(const Gap& g, double r, bool in_void) {
     std::int32_t x = g.a;
     std::int32_t y = g.b;
     double px = 0;
