@@ -112,12 +112,11 @@ class Front {
         r = draw();
         continue;
       }
-      const Placement placement = place_on(cur, r);
-      if (placement.node == kNone) {
-        cur = first_active_from(advance(placement.retired));  // the radius stays for the next segment
+      const std::int32_t placed_node = place_on(cur, r);
+      if (placed_node == kNone) {
+        cur = first_active_from(advance(retired_));  // the radius stays for the next segment
         continue;
       }
-      const std::int32_t placed_node = placement.node;
       area_ += r * r;
       r = draw();
       // Visit order. Closed form (Fig. 4): after D4 on D1 -> D2, the next segment is D2 -> D3,
@@ -536,14 +535,12 @@ class Front {
 
   // ------------------------------------------------------------------------------------------
   // Sec. 2.2: placing a disk of radius r on segment c -> n, with cases (a)-(d).
-  // Returns the new node, or kNone and the segment it retired (after cuts, not necessarily the
-  // one it started on): the sweep goes on after it.
-  struct Placement {
-    std::int32_t node;     // the new disk, or kNone
-    std::int32_t retired;  // with kNone: the segment that was blocked
-  };
+  // Returns the new node, or kNone after setting retired_ to the segment it retired (after cuts,
+  // not necessarily the one it started on): the sweep goes on after it. (Returned as a pair of
+  // ids, the two were stored as 4-byte halves and reloaded as one 8-byte register, a
+  // store-forwarding stall on every disk.)
   // Case (a): accept; the front becomes ... c -> i -> n ...
-  Placement accept(std::int32_t c, std::int32_t n, double px, double py, double r) {
+  std::int32_t accept(std::int32_t c, std::int32_t n, double px, double py, double r) {
     const std::int32_t i = add_node(px, py, r);
     ++front_size_;
     if (!list_) {
@@ -551,10 +548,10 @@ class Front {
     }
     link(c, i);
     link(i, n);
-    return {i, kNone};
+    return i;
   }
 
-  Placement place_on(std::int32_t c, double r) {
+  std::int32_t place_on(std::int32_t c, double r) {
     std::int32_t n = next_[static_cast<std::size_t>(c)];
     for (;;) {
       ++stats_.attempts;
@@ -562,7 +559,8 @@ class Front {
       double py = 0;
       if (!tangent(c, n, r, px, py)) {
         block(c);
-        return {kNone, c};
+        retired_ = c;
+        return kNone;
       }
       const bool can_forward = !(Open && n == kRight);
       const bool can_backward = !(Open && c == kLeft);
@@ -599,7 +597,8 @@ class Front {
         // Every overlapped disk is off the window or enclosed by the front: the paper's window
         // check would have missed it. Retire the segment rather than emit an overlap.
         block(c);
-        return {kNone, c};
+        retired_ = c;
+        return kNone;
       }
       ++stats_.cuts;
       // The paper's index typos are corrected here (shared/design.md, "The paper, read closely"):
@@ -736,6 +735,7 @@ class Front {
   HugeVector<std::int32_t> anext_, aprev_;  // the active segments, in front order
   std::size_t active_ = 0;
   std::size_t front_size_ = 0;
+  std::int32_t retired_ = kNone;  // place_on()'s retired segment
 
   CellGrid grid_;
   HugeVector<std::int32_t> head_;
