@@ -16,10 +16,14 @@
 namespace frontpack::detail {
 
 /// Square cells over the box [xmin, xmin + w] x [ymin, ymin + h] grown by 4 rmax on every side.
-/// The cells are a hair wider than 2 rmax, so that two disks of radius <= rmax that overlap have
-/// their centres in the same or neighbouring cells even after rounding; for absurd aspect ratios
-/// the side doubles until there are at most about 16M cells. Points outside map to the border
-/// cells (col() and row() clamp).
+/// The cells are 1.5 rmax wide; for absurd aspect ratios the side doubles until there are at most
+/// about 16M cells. Points outside map to the border cells (col() and row() clamp). A search
+/// covers the cells its reach spans, whatever their size: cells of 2 rmax made the generators'
+/// scans test about 30% more disks (the box of cells spanned is wider than the reach), and each
+/// disk tested is a likely cache miss; cells of rmax cost more in empty cells and loop exits than
+/// they saved (the boundary front 3% slower, the open form's too). At 1.5 rmax the open front is
+/// 3% and the boundary front about 5% faster than at 2 rmax, for 1-2 more bytes per disk of cells
+/// (front-only drivers, 16-24 alternating runs each, 2026-11-23).
 struct CellGrid {
   double x0 = 0, y0 = 0;  // lower-left corner
   double side = 1, inv_side = 1;
@@ -32,7 +36,7 @@ struct CellGrid {
     y0 = ymin - margin;
     const double gw = w + 2 * margin;
     const double gh = h + 2 * margin;
-    side = 2 * rmax * (1 + 1e-9);
+    side = 1.5 * rmax;
     while ((gw / side + 1) * (gh / side + 1) > 16e6) {
       side *= 2;
     }
