@@ -16,14 +16,17 @@
 namespace frontpack::detail {
 
 /// Square cells over the box [xmin, xmin + w] x [ymin, ymin + h] grown by 4 rmax on every side.
-/// The cells are 1.5 rmax wide; for absurd aspect ratios the side doubles until there are at most
-/// about 16M cells. Points outside map to the border cells (col() and row() clamp). A search
+/// The cells are 1.5 rmax wide, or wider where that would make more than about 16M cells (a
+/// domain of more than about 30 million disks, or an absurd aspect ratio): then the side grows to
+/// just what the cap allows. Points outside map to the border cells (col() and row() clamp). A search
 /// covers the cells its reach spans, whatever their size: cells of 2 rmax made the generators'
 /// scans test about 30% more disks (the box of cells spanned is wider than the reach), and each
 /// disk tested is a likely cache miss; cells of rmax cost more in empty cells and loop exits than
-/// they saved (the boundary front 3% slower, the open form's too). At 1.5 rmax the open front is
-/// 3% and the boundary front about 5% faster than at 2 rmax, for 1-2 more bytes per disk of cells
-/// (front-only drivers, 16-24 alternating runs each, 2026-11-23).
+/// they saved (the boundary front 2% slower than at 2 rmax; the open form's was slower at rmax and
+/// rmax / 2 too, docs/performance.md). At 1.5 rmax the open front is 2.5% and the boundary front
+/// 6% faster than at 2 rmax (front-only drivers, 16 alternating runs each, 2026-11-23), for
+/// 1-2 more bytes per disk of cells with radii in [r, 10 r] (3 to 6 with constant radii; the
+/// generators free the grid before the output grows, so the peak does not change).
 struct CellGrid {
   double x0 = 0, y0 = 0;  // lower-left corner
   double side = 1, inv_side = 1;
@@ -37,8 +40,11 @@ struct CellGrid {
     const double gw = w + 2 * margin;
     const double gh = h + 2 * margin;
     side = 1.5 * rmax;
+    if (const double fit = std::sqrt(gw * gh / 16e6); fit > side) {
+      side = fit;  // about 16M cells; the loop below allows for the cells cut at the edges
+    }
     while ((gw / side + 1) * (gh / side + 1) > 16e6) {
-      side *= 2;
+      side *= 1.0625;
     }
     inv_side = 1.0 / side;
     nx = static_cast<std::size_t>(gw * inv_side) + 1;
@@ -189,7 +195,7 @@ class RadiusClasses {
   }
 
  private:
-  // The class by binary search (N a power of two), for the table.
+  // The class by bisection over the floors, for the table.
   [[nodiscard]] int search(double r) const noexcept {
     std::size_t k = 0;
     for (std::size_t step = std::bit_ceil(static_cast<std::size_t>(N)) / 2; step > 0; step /= 2) {
