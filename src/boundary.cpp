@@ -369,15 +369,23 @@ class BoundaryFront {
   [[nodiscard]] Point local(Point p) const noexcept { return {p.x - origin_.x, p.y - origin_.y}; }
 
   // ------------------------------------------------------------------------------------------
-  // The grid: placed disks and reflex vertices in linked cells; per cell, the walls within reach
-  // of it (a disk of radius <= rmax centred in the cell can only cross those).
+  // The grid: placed disks in linked cells (reflex vertices are nodes, but not in the cells: see
+  // below); per cell, the walls within reach of it (a disk of radius <= rmax centred in the cell
+  // can only cross those).
 
   void setup_grid() {
     grid_ = CellGrid(0, 0, width_, height_, rmax_);
     head_cell_.assign(grid_.cells(), kNone);
 
+    // The reflex vertices are nodes (elements a disk can touch) but stay out of the cells: as
+    // obstacles their walls cover them. A disk closer to a vertex than its radius (plus the margin)
+    // is as close to the walls that end there, which are in the cell's list or found by the tree,
+    // and at least as deep in them, and the walls are tried first; so no scan ever returned one
+    // (counted on 5 shapes), and on the rough ring `big_polygon` they were most of the disks each
+    // scan near the boundary tested.
     for (std::size_t v = 0; v < corners_.size(); ++v) {
-      add_node(corner_at_[v].x, corner_at_[v].y, 0);
+      nodes_.push_back(Node{corner_at_[v].x, corner_at_[v].y, 0, kNone, kNone});
+      before_.push_back(kNone);
     }
 
     // Walls per cell (compressed rows): those meeting the cell grown by rmax + the clearance.
@@ -643,7 +651,8 @@ class BoundaryFront {
     return dx * dx + dy * dy;
   }
 
-  // The element the candidate overlaps most deeply (a disk, a reflex vertex or a wall), or kNone.
+  // The element the candidate overlaps most deeply (a disk or a wall; a reflex vertex is never
+  // deeper than the walls that end there, setup_grid()), or kNone.
   // Its parents need no skipping: it touches them at the full clearance, outside the band (at
   // most 3/4 of the clearance) in which depth() and the wall test can see an overlap.
   // With Any, the first element found that the candidate overlaps: for callers that only need to
