@@ -230,9 +230,7 @@ class BoundaryFront {
     release(wall_begin_);
     release(wall_ids_);
     release(walled_);
-    for (std::size_t i = corners_.size(); i < nodes_.size(); ++i) {
-      out_.push_back(Disk{{origin_.x + nodes_[i].x, origin_.y + nodes_[i].y}, nodes_[i].r});
-    }
+    move_out(nodes_, corners_.size(), origin_, out_);
     return result;
   }
 

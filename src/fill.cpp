@@ -202,7 +202,12 @@ Packing run_fill(const Domain& domain, const FillOptions& options,
     }
     keep_where(raw, drop, 0);
   }
-  raw.shrink_to_fit();
+  // The capacity reserved beyond the disks generated was never touched and costs no memory; the
+  // culled and dropped disks' places were. Give them back only when they are worth a copy (a
+  // copy of every disk into memory never touched: 0.2 s of the 10M-disk pipeline's 7 s).
+  if (packing.certificate.generated - raw.size() > raw.size() / 8) {
+    raw.shrink_to_fit();
+  }
   packing.disks = std::move(raw);
   packing.certificate.exact = true;
   packing.stats.seconds_overlap = seconds_since(t0);

@@ -138,9 +138,7 @@ class Front {
     for (auto& v : voids_) {
       release(v);
     }
-    for (std::size_t i = kFirstDisk; i < nodes_.size(); ++i) {
-      out_.push_back(Disk{{origin_.x + nodes_[i].x, origin_.y + nodes_[i].y}, nodes_[i].r});
-    }
+    move_out(nodes_, kFirstDisk, origin_, out_);
     return result;
   }
 

@@ -5,7 +5,9 @@
 // for small blocks, it is the standard allocator. Header-only and CGAL-free (hot loops).
 #pragma once
 
+#include <algorithm>
 #include <cstddef>
+#include <cstdint>
 #include <cstdlib>
 #include <limits>
 #include <memory>
@@ -68,5 +70,42 @@ struct HugePageAllocator {
 /// A vector in huge pages when large.
 template <class T>
 using HugeVector = std::vector<T, HugePageAllocator<T>>;
+
+/// Gives the whole pages of `v`'s storage below element `end` back to the kernel (Linux,
+/// MADV_DONTNEED; elsewhere nothing): for a vector that is read once more from front to back
+/// before it is freed. Those elements must not be read again.
+template <class T>
+void discard_below(HugeVector<T>& v, std::size_t end) noexcept {
+#if defined(__linux__)
+  constexpr std::size_t kPage = 4096;
+  const auto begin = reinterpret_cast<std::uintptr_t>(v.data());  // NOLINT(*-reinterpret-cast)
+  const std::uintptr_t first = (begin + kPage - 1) / kPage * kPage;
+  const std::uintptr_t last = (begin + end * sizeof(T)) / kPage * kPage;
+  if (last > first) {
+    ::madvise(reinterpret_cast<void*>(first), last - first, MADV_DONTNEED);  // NOLINT(*-reinterpret-cast)
+  }
+#else
+  (void)v;
+  (void)end;
+#endif
+}
+
+/// Appends the disks of nodes[first, size), shifted by `origin`, to `out` and frees the nodes.
+/// The copy gives the nodes' memory back 2 MiB at a time as it goes, so that the output's fresh
+/// pages are the ones just given back: the peak holds the nodes or the output, not both, and the
+/// output's first touches reuse memory the machine has just used (a VM's first touch of memory
+/// the host has reclaimed is several times slower).
+template <class Node, class DiskT, class PointT>
+void move_out(HugeVector<Node>& nodes, std::size_t first, PointT origin, std::vector<DiskT>& out) {
+  constexpr std::size_t kStep = (std::size_t{1} << 21) / sizeof(Node);
+  for (std::size_t i = first; i < nodes.size();) {
+    const std::size_t end = std::min(nodes.size(), i + kStep);
+    for (; i < end; ++i) {
+      out.push_back(DiskT{{origin.x + nodes[i].x, origin.y + nodes[i].y}, nodes[i].r});
+    }
+    discard_below(nodes, end);
+  }
+  HugeVector<Node>().swap(nodes);
+}
 
 }  // namespace frontpack::detail
