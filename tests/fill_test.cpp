@@ -288,6 +288,19 @@ TEST(Fill, PolygonsWhoseBoxesOverlapKeepTheirOwnDisks) {
   }
 }
 
+// The paper's forms fill the domain's box and cull: in a triangle, about half of what they
+// generate. The packing must not keep the culled disks' memory (it held a copy of every disk
+// once: a 10M-disk packing is 240 MB).
+TEST(Fill, PackingKeepsNoMemoryOfCulledDisks) {
+  const fp::Domain triangle = fp::Domain::from_wkt("POLYGON((0 0,2 0,0 2,0 0))");
+  for (const fp::Method m : {fp::Method::closed, fp::Method::open}) {
+    SCOPED_TRACE(fp::to_string(m));
+    const fp::Packing p = fill(triangle, m, fp::Radii::uniform(0.005, 0.02), 7);
+    ASSERT_GT(p.certificate.culled, p.disks.size() / 4) << "the test needs heavy culling";
+    EXPECT_LE(p.disks.capacity() - p.disks.size(), p.disks.size() / 8);
+  }
+}
+
 TEST(Fill, OptionsAreChecked) {
   EXPECT_THROW((void)fp::Radii::uniform(0.2, 0.1), fp::OptionError);
   EXPECT_THROW((void)fp::Radii::uniform(0, 0.1), fp::OptionError);
