@@ -6,6 +6,7 @@
 #pragma once
 
 #include <algorithm>
+#include <cassert>
 #include <cstddef>
 #include <cstdint>
 #include <cstdlib>
@@ -71,39 +72,49 @@ struct HugePageAllocator {
 template <class T>
 using HugeVector = std::vector<T, HugePageAllocator<T>>;
 
-/// Gives the whole pages of `v`'s storage below element `end` back to the kernel (Linux,
+/// Gives the whole pages of `v`'s storage in elements [begin, end) back to the kernel (Linux,
 /// MADV_DONTNEED; elsewhere nothing): for a vector that is read once more from front to back
 /// before it is freed. Those elements must not be read again.
 template <class T>
-void discard_below(HugeVector<T>& v, std::size_t end) noexcept {
+void discard(HugeVector<T>& v, std::size_t begin, std::size_t end) noexcept {
+  assert(begin <= end && end <= v.size());
 #if defined(__linux__)
   constexpr std::size_t kPage = 4096;
-  const auto begin = reinterpret_cast<std::uintptr_t>(v.data());  // NOLINT(*-reinterpret-cast)
-  const std::uintptr_t first = (begin + kPage - 1) / kPage * kPage;
-  const std::uintptr_t last = (begin + end * sizeof(T)) / kPage * kPage;
+  const auto base = reinterpret_cast<std::uintptr_t>(v.data());  // NOLINT(*-reinterpret-cast)
+  const std::uintptr_t first = (base + begin * sizeof(T) + kPage - 1) / kPage * kPage;
+  const std::uintptr_t last = (base + end * sizeof(T)) / kPage * kPage;
   if (last > first) {
     ::madvise(reinterpret_cast<void*>(first), last - first, MADV_DONTNEED);  // NOLINT(*-reinterpret-cast)
   }
 #else
   (void)v;
+  (void)begin;
   (void)end;
 #endif
 }
 
 /// Appends the disks of nodes[first, size), shifted by `origin`, to `out` and frees the nodes.
-/// The copy gives the nodes' memory back 2 MiB at a time as it goes, so that the output's fresh
-/// pages are the ones just given back: the peak holds the nodes or the output, not both, and the
-/// output's first touches reuse memory the machine has just used (a VM's first touch of memory
-/// the host has reclaimed is several times slower).
+/// The copy gives the nodes' memory back as it goes, a 2 MiB block of the nodes' storage at a
+/// time, so that the output's fresh pages are the ones just given back: the peak holds the nodes
+/// or the output, not both, and the output's first touches reuse memory the machine has just
+/// used (a VM's first touch of memory the host has reclaimed is several times slower). The
+/// output is reserved first, so that it never moves (and nothing throws) while nodes are
+/// discarded.
 template <class Node, class DiskT, class PointT>
 void move_out(HugeVector<Node>& nodes, std::size_t first, PointT origin, std::vector<DiskT>& out) {
-  constexpr std::size_t kStep = (std::size_t{1} << 21) / sizeof(Node);
+  static_assert(sizeof(Node) <= HugePageAllocator<Node>::kHuge);
+  constexpr std::size_t kStep = HugePageAllocator<Node>::kHuge / sizeof(Node);
+  if (const std::size_t n = nodes.size() - std::min(first, nodes.size()); out.capacity() - out.size() < n) {
+    out.reserve(std::max(out.size() + n, 2 * out.capacity()));  // geometric: one call per polygon
+  }
+  std::size_t done = 0;  // nodes[0, done) are discarded
   for (std::size_t i = first; i < nodes.size();) {
-    const std::size_t end = std::min(nodes.size(), i + kStep);
+    const std::size_t end = std::min(nodes.size(), (i / kStep + 1) * kStep);  // a block boundary
     for (; i < end; ++i) {
       out.push_back(DiskT{{origin.x + nodes[i].x, origin.y + nodes[i].y}, nodes[i].r});
     }
-    discard_below(nodes, end);
+    discard(nodes, done, end);
+    done = end;
   }
   HugeVector<Node>().swap(nodes);
 }
