@@ -19,14 +19,11 @@ namespace frontpack::detail {
 /// The cells are 1.5 rmax wide, or wider where that would make more than about 16M cells (a
 /// domain of more than about 30 million disks, or an absurd aspect ratio): then the side grows to
 /// just what the cap allows. Points outside map to the border cells (col() and row() clamp). A
-/// search covers the cells its reach spans, whatever their size: cells of 2 rmax made the
-/// generators' scans test about 30% more disks (the box of cells spanned is wider than the
-/// reach), and each disk tested is a likely cache miss; cells of rmax cost more in empty cells and loop exits than
-/// they saved (the boundary front 2% slower than at 2 rmax; the open form's was slower at rmax and
-/// rmax / 2 too, docs/performance.md). At 1.5 rmax the open front is 2.5% and the boundary front
-/// 6% faster than at 2 rmax (front-only drivers, 16 alternating runs each, 2026-11-23), for
-/// 1-2 more bytes per disk of cells with radii in [r, 10 r] (3 to 6 with constant radii; the
-/// generators free the grid before the output grows, so the peak does not change).
+/// search covers the cells its reach spans, whatever their size. Cells of 2 rmax made the
+/// generators' scans test about 30% more disks, each a likely cache miss; cells of rmax cost more
+/// in empty cells than they saved. At 1.5 rmax the open front is 2.5% and the boundary front 6%
+/// faster than at 2 rmax, for 1-2 more bytes per disk of cells, freed before the output grows
+/// (docs/performance.md).
 struct CellGrid {
   double x0 = 0, y0 = 0;  // lower-left corner
   double side = 1, inv_side = 1;

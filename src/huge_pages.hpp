@@ -2,7 +2,8 @@
 // cell heads): blocks of 2 MiB and more are aligned to 2 MiB and offered to the kernel for
 // transparent huge pages (Linux, madvise). A million-disk front touches tens of megabytes; with
 // 4 KiB pages that is thousands of page faults and, in the grid scans, TLB misses. Elsewhere, and
-// for small blocks, it is the standard allocator. Header-only and CGAL-free (hot loops).
+// for small blocks, it is the standard allocator. Also move_out(), which copies the nodes out as
+// disks while giving their memory back. Header-only and CGAL-free (hot loops).
 #pragma once
 
 #include <algorithm>
@@ -18,6 +19,8 @@
 #if defined(__linux__)
 #include <sys/mman.h>
 #endif
+
+#include "frontpack/geometry.hpp"
 
 namespace frontpack::detail {
 
@@ -100,18 +103,18 @@ void discard(HugeVector<T>& v, std::size_t begin, std::size_t end) noexcept {
 /// used (a VM's first touch of memory the host has reclaimed is several times slower). The
 /// output is reserved first, so that it never moves (and nothing throws) while nodes are
 /// discarded.
-template <class Node, class DiskT, class PointT>
-void move_out(HugeVector<Node>& nodes, std::size_t first, PointT origin, std::vector<DiskT>& out) {
+template <class Node>
+void move_out(HugeVector<Node>& nodes, std::size_t first, Point origin, std::vector<Disk>& out) {
   static_assert(sizeof(Node) <= HugePageAllocator<Node>::kHuge);
   constexpr std::size_t kStep = HugePageAllocator<Node>::kHuge / sizeof(Node);
   if (const std::size_t n = nodes.size() - std::min(first, nodes.size()); out.capacity() - out.size() < n) {
-    out.reserve(std::max(out.size() + n, 2 * out.capacity()));  // geometric: one call per polygon
+    out.reserve(std::max(out.size() + n, 2 * out.capacity()));  // geometric over several polygons
   }
   std::size_t done = 0;  // nodes[0, done) are discarded
   for (std::size_t i = first; i < nodes.size();) {
     const std::size_t end = std::min(nodes.size(), (i / kStep + 1) * kStep);  // a block boundary
     for (; i < end; ++i) {
-      out.push_back(DiskT{{origin.x + nodes[i].x, origin.y + nodes[i].y}, nodes[i].r});
+      out.push_back(Disk{{origin.x + nodes[i].x, origin.y + nodes[i].y}, nodes[i].r});
     }
     discard(nodes, done, end);
     done = end;
