@@ -711,24 +711,14 @@ class BoundaryFront {
     const std::int64_t c1 = col(p.x + r_reach);
     const std::int64_t r0 = row(p.y - r_reach);
     const std::int64_t r1 = row(p.y + r_reach);
-    const Node* const nodes = nodes_.data();
-    for (std::int64_t j = r0; j <= r1; ++j) {
-      const std::int32_t* const heads = head_cell_.data() + static_cast<std::size_t>(j) * grid_.nx;
-      for (std::int64_t i = c0; i <= c1; ++i) {
-        for (std::int32_t d = heads[i]; d != kNone;) {
-          const Node& o = nodes[d];
-          const double dd = depth(p, o);
-          if (Any && dd > 0) {
-            return d;
-          }
-          if (dd > 0 && (best == kNone || dd > best_depth)) {
-            best = d;
-            best_depth = dd;
-          }
-          d = o.cell_next;
-        }
+    visit_cells(head_cell_.data(), grid_.nx, nodes_.data(), kNone, c0, c1, r0, r1, [&](std::int32_t d, const Node& o) {
+      const double dd = depth(p, o);
+      if (dd > 0 && (Any || best == kNone || dd > best_depth)) {
+        best = d;
+        best_depth = dd;
       }
-    }
+      return Any && dd > 0;
+    });
     return best;
   }
 

@@ -70,6 +70,61 @@ struct CellGrid {
   }
 };
 
+/// Visits the disks in the cells [c0, c1] x [r0, r1] of a grid whose cell i's disks are the chain
+/// heads[i], nodes[heads[i]].cell_next, ... ending at `none`: visit(d, node) for each, in the
+/// order of the rows, the cells in them and the chains, until it returns true. Returns whether
+/// it did. The chains' first disks are gathered and prefetched before any is visited, so that
+/// their cache misses overlap; visited one cell after another, each waited for the one before (a
+/// scan is longer than the processor looks ahead). The boundary front got 10% faster, the open
+/// front 2-4% (docs/performance.md). Empty cells prefetch an address computed from `none`, in
+/// integer arithmetic (a prefetch never faults), where a branch or a select cost the gain.
+template <class Node, class Visit>
+[[gnu::always_inline]] inline bool visit_cells(const std::int32_t* heads, std::size_t nx, const Node* nodes,
+                                               std::int32_t none, std::int64_t c0, std::int64_t c1, std::int64_t r0,
+                                               std::int64_t r1, Visit&& visit) {
+  const auto cols = static_cast<std::size_t>(c1 - c0 + 1);
+  const auto rows = static_cast<std::size_t>(r1 - r0 + 1);
+  std::array<std::int32_t, 32> first;  // NOLINT(cppcoreguidelines-pro-type-member-init): written before read
+  std::size_t count = 0;
+  if (cols * rows <= first.size()) {
+    const auto base = reinterpret_cast<std::uintptr_t>(nodes);  // NOLINT(*-reinterpret-cast)
+    for (std::size_t j = 0; j < rows; ++j) {
+      const std::int32_t* const row = heads + (static_cast<std::size_t>(r0) + j) * nx + static_cast<std::size_t>(c0);
+      for (std::size_t i = 0; i < cols; ++i) {
+        const std::int32_t d = row[i];
+        const std::uintptr_t at = base + static_cast<std::uintptr_t>(static_cast<std::intptr_t>(d)) * sizeof(Node);
+        __builtin_prefetch(reinterpret_cast<const void*>(at));  // NOLINT(*-reinterpret-cast, performance-no-int-to-ptr)
+        first[count] = d;
+        count += d != none ? 1 : 0;
+      }
+    }
+  } else {  // a reach wider than the cells (a grid coarsened by the cell cap): no gathering
+    for (std::size_t j = 0; j < rows; ++j) {
+      const std::int32_t* const row = heads + (static_cast<std::size_t>(r0) + j) * nx + static_cast<std::size_t>(c0);
+      for (std::size_t i = 0; i < cols; ++i) {
+        for (std::int32_t d = row[i]; d != none;) {
+          const Node& o = nodes[d];
+          if (visit(d, o)) {
+            return true;
+          }
+          d = o.cell_next;
+        }
+      }
+    }
+    return false;
+  }
+  for (std::size_t k = 0; k < count; ++k) {
+    for (std::int32_t d = first[k]; d != none;) {
+      const Node& o = nodes[d];
+      if (visit(d, o)) {
+        return true;
+      }
+      d = o.cell_next;
+    }
+  }
+  return false;
+}
+
 /// A candidate disk with the limits of the overlap test's band precomputed: the test runs tens of
 /// times per disk. Another disk o is clear beyond r_hi + o.r and overlapping within r_lo + o.r;
 /// in between the exact predicate decides (margin = clearance / 2, band = clearance / 4).

@@ -249,20 +249,8 @@ class Front {
     const std::int64_t c1 = col(x + reach);
     const std::int64_t r0 = row(y - reach);
     const std::int64_t r1 = row(y + reach);
-    const Node* const nodes = nodes_.data();
-    for (std::int64_t j = r0; j <= r1; ++j) {
-      const std::int32_t* const heads = head_.data() + static_cast<std::size_t>(j) * grid_.nx;
-      for (std::int64_t i = c0; i <= c1; ++i) {
-        for (std::int32_t d = heads[i]; d != kNone;) {
-          const Node& o = nodes[d];
-          if (overlaps(p, o)) {
-            return true;
-          }
-          d = o.cell_next;
-        }
-      }
-    }
-    return false;
+    return visit_cells(head_.data(), grid_.nx, nodes_.data(), kNone, c0, c1, r0, r1,
+                       [&](std::int32_t /*d*/, const Node& o) { return overlaps(p, o); });
   }
 
   // ------------------------------------------------------------------------------------------
