@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <array>
 #include <bit>
+#include <cassert>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -70,57 +71,66 @@ struct CellGrid {
   }
 };
 
-/// Visits the disks in the cells [c0, c1] x [r0, r1] of a grid whose cell i's disks are the chain
-/// heads[i], nodes[heads[i]].cell_next, ... ending at `none`: visit(d, node) for each, in the
-/// order of the rows, the cells in them and the chains, until it returns true. Returns whether
-/// it did. The chains' first disks are gathered, without a branch, before any is visited, so
-/// that their loads overlap; walked one cell after another, each chain waited for the one before
-/// (a scan is longer than the processor looks ahead). On the 1M square the boundary front got 9%
-/// faster (7 points from the gathering, 2.5 from prefetching the gathered disks), the open front
-/// stayed within noise. Empty cells prefetch an address computed from `none` in integer
-/// arithmetic (a prefetch never faults): a branch or a select there cost the whole gain.
+/// How many cells a scan's block may have for visit_cells() to gather their first disks.
+inline constexpr std::size_t kGatherCells = 32;
+
+/// Visits the disks in the cells [c0, c1] x [r0, r1] (0 <= c0 <= c1 < nx, 0 <= r0 <= r1 < the rows
+/// of `heads`) of a grid whose cell i's disks are the chain heads[i], nodes[heads[i]].cell_next,
+/// ... ending at `none`: visit(d, node) for each, in the order of the rows, the cells in them and
+/// the chains, until it returns true. Returns whether it did. In a block of up to kGatherCells
+/// cells, the chains' first disks are gathered, without a branch, and prefetched before any is
+/// visited, so that their loads overlap; walked one cell after another, each chain waited for the
+/// one before (a scan is longer than the processor looks ahead). Empty cells prefetch an address
+/// computed from `none` in integer arithmetic (a prefetch never faults): a branch or a select
+/// there cost the gain. Measurements in docs/performance.md (sixth session).
 template <class Node, class Visit>
 [[gnu::always_inline]] inline bool visit_cells(const std::int32_t* heads, std::size_t nx, const Node* nodes,
                                                std::int32_t none, std::int64_t c0, std::int64_t c1, std::int64_t r0,
                                                std::int64_t r1, Visit&& visit) {
   const auto cols = static_cast<std::size_t>(c1 - c0 + 1);
   const auto rows = static_cast<std::size_t>(r1 - r0 + 1);
-  std::array<std::int32_t, 32> first;  // NOLINT(cppcoreguidelines-pro-type-member-init): written before read
-  std::size_t count = 0;
-  if (cols * rows <= first.size()) {
-    const auto base = reinterpret_cast<std::uintptr_t>(nodes);  // NOLINT(*-reinterpret-cast)
-    for (std::size_t j = 0; j < rows; ++j) {
-      const std::int32_t* const row = heads + (static_cast<std::size_t>(r0) + j) * nx + static_cast<std::size_t>(c0);
-      for (std::size_t i = 0; i < cols; ++i) {
-        const std::int32_t d = row[i];
-        const std::uintptr_t at = base + static_cast<std::uintptr_t>(static_cast<std::intptr_t>(d)) * sizeof(Node);
-        __builtin_prefetch(reinterpret_cast<const void*>(at));  // NOLINT(*-reinterpret-cast, performance-no-int-to-ptr)
-        first[count] = d;
-        count += d != none ? 1 : 0;
-      }
-    }
-  } else {  // a reach wider than the cells (a grid coarsened by the cell cap): no gathering
-    for (std::size_t j = 0; j < rows; ++j) {
-      const std::int32_t* const row = heads + (static_cast<std::size_t>(r0) + j) * nx + static_cast<std::size_t>(c0);
-      for (std::size_t i = 0; i < cols; ++i) {
-        for (std::int32_t d = row[i]; d != none;) {
-          const Node& o = nodes[d];
-          if (visit(d, o)) {
-            return true;
-          }
-          d = o.cell_next;
-        }
-      }
-    }
-    return false;
-  }
-  for (std::size_t k = 0; k < count; ++k) {
-    for (std::int32_t d = first[k]; d != none;) {
+  auto row = [&](std::size_t j) {
+    return heads + (static_cast<std::size_t>(r0) + j) * nx + static_cast<std::size_t>(c0);
+  };
+  auto chain = [&](std::int32_t d) {  // visits the chain from d; whether visit() said stop
+    while (d != none) {
       const Node& o = nodes[d];
       if (visit(d, o)) {
         return true;
       }
       d = o.cell_next;
+    }
+    return false;
+  };
+  std::array<std::int32_t, 32> first;  // NOLINT(cppcoreguidelines-pro-type-member-init): written before read
+  if (cols * rows > first.size()) {    // a reach wider than the cells (a grid coarsened by the cell cap)
+    for (std::size_t j = 0; j < rows; ++j) {
+      for (std::size_t i = 0; i < cols; ++i) {
+        if (chain(row(j)[i])) {
+          return true;
+        }
+      }
+    }
+    return false;
+  }
+  std::size_t count = 0;
+  const auto base = reinterpret_cast<std::uintptr_t>(nodes);  // NOLINT(*-reinterpret-cast)
+  for (std::size_t j = 0; j < rows; ++j) {
+    for (std::size_t i = 0; i < cols; ++i) {
+      const std::int32_t d = row(j)[i];
+      const std::uintptr_t at = base + static_cast<std::uintptr_t>(static_cast<std::intptr_t>(d)) * sizeof(Node);
+#if defined(__GNUC__)
+      __builtin_prefetch(reinterpret_cast<const void*>(at));  // NOLINT(*-reinterpret-cast, performance-no-int-to-ptr)
+#else
+      (void)at;
+#endif
+      first[count] = d;
+      count += d != none ? 1 : 0;
+    }
+  }
+  for (std::size_t k = 0; k < count; ++k) {
+    if (chain(first[k])) {
+      return true;
     }
   }
   return false;

@@ -17,6 +17,7 @@
 
 namespace {
 
+using frontpack::detail::kGatherCells;
 using frontpack::detail::visit_cells;
 
 struct Node {
@@ -25,7 +26,7 @@ struct Node {
 };
 
 // A grid of nx x ny cells with `disks` disks dropped into random cells (chains newest first, as
-// the generators link them), about a third of the cells empty.
+// the generators link them).
 struct Grid {
   std::size_t nx, ny;
   std::int32_t none;
@@ -94,7 +95,7 @@ void check_blocks(const Grid& g, std::uint64_t seed) {
     if (r1 < r0) {
       std::swap(r0, r1);
     }
-    ((c1 - c0 + 1) * (r1 - r0 + 1) <= 32 ? small : large) += 1;
+    (static_cast<std::size_t>((c1 - c0 + 1) * (r1 - r0 + 1)) <= kGatherCells ? small : large) += 1;
     const std::vector<std::int32_t> all = g.walk(c0, c1, r0, r1, 0);
     bool stopped = true;
     ASSERT_EQ(g.visit(c0, c1, r0, r1, 0, stopped), all) << c0 << ".." << c1 << " x " << r0 << ".." << r1;
@@ -115,6 +116,26 @@ TEST(VisitCells, VisitsWhatTheChainsHoldInOrderAndStopsWhenTold) {
   // The open front's end of chain (-1) and the boundary front's (the least int32).
   check_blocks(Grid(40, 30, 2500, -1, 1), 11);
   check_blocks(Grid(40, 30, 2500, std::numeric_limits<std::int32_t>::min(), 2), 12);
+}
+
+TEST(VisitCells, BlocksAtTheGatheringLimit) {
+  // Blocks of exactly kGatherCells cells (gathered) and of one more (not), in several shapes.
+  static_assert(kGatherCells == 32);
+  const Grid g(40, 40, 3000, -1, 6);
+  for (const auto& [w, h] : {std::pair{4, 8}, std::pair{8, 4}, std::pair{1, 32}, std::pair{32, 1}, std::pair{3, 11},
+                             std::pair{11, 3}, std::pair{33, 1}, std::pair{1, 33}}) {
+    for (std::int64_t c0 = 0; c0 + w <= 40; c0 += 3) {
+      const std::int64_t r0 = (c0 * 7) % (41 - h);
+      bool stopped = true;
+      const std::vector<std::int32_t> all = g.walk(c0, c0 + w - 1, r0, r0 + h - 1, 0);
+      ASSERT_EQ(g.visit(c0, c0 + w - 1, r0, r0 + h - 1, 0, stopped), all) << w << " x " << h << " at " << c0;
+      EXPECT_FALSE(stopped);
+      ASSERT_FALSE(all.empty());
+      EXPECT_EQ(g.visit(c0, c0 + w - 1, r0, r0 + h - 1, all.size() / 2 + 1, stopped),
+                g.walk(c0, c0 + w - 1, r0, r0 + h - 1, all.size() / 2 + 1));
+      EXPECT_TRUE(stopped);
+    }
+  }
 }
 
 TEST(VisitCells, SparseAndDenseGrids) {
