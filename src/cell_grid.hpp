@@ -102,8 +102,9 @@ template <class Node, class Visit>
     }
     return false;
   };
-  std::array<std::int32_t, 32> first;  // NOLINT(cppcoreguidelines-pro-type-member-init): written before read
-  if (cols * rows > first.size()) {    // a reach wider than the cells (a grid coarsened by the cell cap)
+  assert(c0 >= 0 && c0 <= c1 && static_cast<std::size_t>(c1) < nx && r0 >= 0 && r0 <= r1);
+  std::array<std::int32_t, kGatherCells> first;  // NOLINT(cppcoreguidelines-pro-type-member-init): written before read
+  if (cols * rows > first.size()) {              // a clearance above about 4/3 rmax: the reach spans more cells
     for (std::size_t j = 0; j < rows; ++j) {
       for (std::size_t i = 0; i < cols; ++i) {
         if (chain(row(j)[i])) {
