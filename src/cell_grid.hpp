@@ -17,14 +17,15 @@
 namespace frontpack::detail {
 
 /// Square cells over the box [xmin, xmin + w] x [ymin, ymin + h] grown by 4 rmax on every side.
-/// The cells are 1.5 rmax wide, or wider where that would make more than about 16M cells (a
-/// domain of more than about 30 million disks, or an absurd aspect ratio): then the side grows to
-/// just what the cap allows. Points outside map to the border cells (col() and row() clamp). A
-/// search covers the cells its reach spans, whatever their size. Cells of 2 rmax made the
-/// generators' scans test about 30% more disks, each a likely cache miss; cells of rmax cost more
-/// in empty cells than they saved. At 1.5 rmax the open front is 2.5% and the boundary front 6%
-/// faster than at 2 rmax, for 1-2 more bytes per disk of cells, freed before the output grows
-/// (docs/performance.md).
+/// The cells are rmax wide, or wider where that would make more than about 16M cells (a domain of
+/// more than about 11 million disks at rmax / rmin = 10, or an absurd aspect ratio): then the side
+/// grows to just what the cap allows. Points outside map to the border cells (col() and row()
+/// clamp). A search covers the cells its reach spans, whatever their size. Narrower cells fit the
+/// box a scan spans more tightly to the reach (fewer disks tested, each a likely cache miss) but
+/// put more cells in it. Since visit_cells() reads a block's cell heads without a branch, an empty
+/// cell costs little: from 1.5 rmax to rmax, the open front became 9% and the boundary front 8%
+/// faster (at 0.75 rmax, the boxes outgrow kGatherCells; 0.9 and 1.1 rmax measured no better),
+/// for 3 more bytes per disk of cell heads, freed before the output grows (docs/performance.md).
 struct CellGrid {
   double x0 = 0, y0 = 0;  // lower-left corner
   double side = 1, inv_side = 1;
@@ -37,7 +38,7 @@ struct CellGrid {
     y0 = ymin - margin;
     const double gw = w + 2 * margin;
     const double gh = h + 2 * margin;
-    side = 1.5 * rmax;
+    side = rmax;
     if (const double fit = std::sqrt(gw * gh / 16e6); fit > side) {
       side = fit;  // about 16M cells; the loop below allows for the cells cut at the edges
     }
@@ -104,7 +105,9 @@ template <class Node, class Visit>
   };
   assert(c0 >= 0 && c0 <= c1 && static_cast<std::size_t>(c1) < nx && r0 >= 0 && r0 <= r1);
   std::array<std::int32_t, kGatherCells> first;  // NOLINT(cppcoreguidelines-pro-type-member-init): written before read
-  if (cols * rows > first.size()) {              // a clearance above about 4/3 rmax: the reach spans more cells
+  // More cells than that: a clearance above about 2/3 rmax, or (rarely) a reach of nearly 2 rmax
+  // that straddles one more cell boundary than usual.
+  if (cols * rows > first.size()) {
     for (std::size_t j = 0; j < rows; ++j) {
       for (std::size_t i = 0; i < cols; ++i) {
         if (chain(row(j)[i])) {
