@@ -917,24 +917,22 @@ class BoundaryFront {
     const double qa = vx * vx + vy * vy - 1;
     const double qb = 2 * (ux * vx + uy * vy - ri);
     const double qc = ux * ux + uy * uy - ri * ri;
-    double best = -1;
-    auto consider = [&](double rho) {
-      if (rho > 0 && std::isfinite(rho) && accept(rho) && (best < 0 || rho < best)) {
-        best = rho;
-      }
-    };
+    constexpr double inf = std::numeric_limits<double>::infinity();
+    // Whether rho is a root to take (positive, finite, accepted), without branches.
+    auto ok = [&](double rho) { return (rho > 0) & (rho < inf) & accept(rho); };
     if (qa == 0) {
-      consider(-qc / qb);
-    } else {
-      const double disc = qb * qb - 4 * qa * qc;
-      if (disc >= 0) {
-        const double sq = std::sqrt(disc);
-        const double half = 0.5 / qa;
-        consider((-qb + sq) * half);
-        consider((-qb - sq) * half);
-      }
+      const double rho = -qc / qb;
+      return ok(rho) ? rho : -1;
     }
-    return best;
+    // A negative discriminant (no root) gives NaN roots, which ok() refuses.
+    const double sq = std::sqrt(qb * qb - 4 * qa * qc);
+    const double half = 0.5 / qa;
+    const double hi = (-qb + sq) * half;
+    const double lo = (-qb - sq) * half;
+    const bool ok_hi = ok(hi);
+    const bool ok_lo = ok(lo);
+    const double best = ok_hi ? hi : -1;
+    return ok_lo & (!ok_hi | (lo < hi)) ? lo : best;
   }
 
   // Keeps gap g as a void for radii below class k, and below the pocket left by `blocker`.
@@ -1153,13 +1151,17 @@ class BoundaryFront {
           // a layer later, when their neighbourhood had left the cache, and 10% took a disk.)
           // Not after a move: the new parent can be a wall cut in, and pocket_at_wall() does
           // not tell its sides apart.
-          for (const Gap c : {Gap{x, n}, Gap{n, y}}) {
-            const double cap = c.a == g.bound || c.b == g.bound ? -1 : pocket(c.a, c.b, g.bound);
-            if (cap >= 0 && cap < rmax_) {
-              link(c);
-              keep_void(c, kClasses - 1, g.bound, cap);
+          // Both pockets first: their computations, a long chain of dependent operations
+          // each, then overlap.
+          const std::array<Gap, 2> split{Gap{x, n}, Gap{n, y}};
+          const std::array<double, 2> caps{x == g.bound ? -1 : pocket(x, n, g.bound),
+                                           y == g.bound ? -1 : pocket(n, y, g.bound)};
+          for (std::size_t i = 0; i < 2; ++i) {
+            if (caps[i] >= 0 && caps[i] < rmax_) {
+              link(split[i]);
+              keep_void(split[i], kClasses - 1, g.bound, caps[i]);
             } else {
-              push_gap(c);
+              push_gap(split[i]);
             }
           }
         } else {
