@@ -65,6 +65,8 @@
 #include <cstdint>
 #include <limits>
 #include <numbers>
+#include <tuple>
+#include <utility>
 
 #include "cell_grid.hpp"
 #include "huge_pages.hpp"
@@ -227,7 +229,8 @@ class BoundaryFront {
     }
     release(before_);
     release(head_cell_);
-    release(wall_begin_);
+    release(block_first_);
+    release(cell_walls_);
     release(wall_ids_);
     release(walled_);
     move_out(nodes_, corners_.size(), origin_, out_);
@@ -437,6 +440,41 @@ class BoundaryFront {
         walled_[b / 64] |= std::uint64_t{1} << (b % 64);
       }
     }
+    // The lists kept for the cells of walled blocks only, block by block: a block's cells' lists
+    // one after the other in wall_ids_, and kBlock^2 + 1 entries in cell_walls_ from
+    // block_first_[b], so that a cell's list runs from its entry to the next. Begins for every
+    // cell of the grid were 4 bytes per cell, 4 per disk at cells of rmax, most of them for
+    // cells no wall comes near; the lists, and their order, are the same.
+    block_first_.assign(blocks, 0);
+    std::vector<std::int32_t> ids;
+    ids.reserve(wall_ids_.size());
+    for (std::size_t b = 0; b < blocks; ++b) {
+      if ((walled_[b / 64] >> (b % 64) & 1) == 0) {
+        continue;
+      }
+      block_first_[b] = static_cast<std::uint32_t>(cell_walls_.size());
+      const std::size_t bx = b % blocks_x_ * kBlock;
+      const std::size_t by = b / blocks_x_ * kBlock;
+      for (std::size_t l = 0; l < kBlock * kBlock; ++l) {
+        cell_walls_.push_back(static_cast<std::uint32_t>(ids.size()));
+        const std::size_t i = bx + l % kBlock;
+        const std::size_t j = by + l / kBlock;
+        if (i < grid_.nx && j < grid_.ny) {
+          const std::size_t c = j * grid_.nx + i;
+          ids.insert(ids.end(), wall_ids_.begin() + wall_begin_[c], wall_ids_.begin() + wall_begin_[c + 1]);
+        }
+      }
+      cell_walls_.push_back(static_cast<std::uint32_t>(ids.size()));
+    }
+    wall_ids_.swap(ids);
+    release(wall_begin_);
+  }
+
+  // The range of cell (row, col)'s walls in wall_ids_; only for a cell in a walled block.
+  [[nodiscard]] std::pair<std::uint32_t, std::uint32_t> cell_walls(std::size_t row, std::size_t col) const noexcept {
+    const std::uint32_t* at =
+        cell_walls_.data() + block_first_[block_of(row, col)] + row % kBlock * kBlock + col % kBlock;
+    return {at[0], at[1]};
   }
 
   [[nodiscard]] std::size_t block_of(std::size_t row, std::size_t col) const noexcept {
@@ -673,12 +711,16 @@ class BoundaryFront {
     double best_depth = 0;
     const auto home_col = static_cast<std::size_t>(col(p.x));
     const auto home_row = static_cast<std::size_t>(row(p.y));
-    const std::size_t home = home_row * grid_.nx + home_col;
     const std::size_t block = block_of(home_row, home_col);
     const double reach = p.r + margin_;
-    if ((walled_[block / 64] >> (block % 64) & 1) == 0) {
+    std::uint32_t first_wall = 0;
+    std::uint32_t end_wall = 0;
+    if ((walled_[block / 64] >> (block % 64) & 1) != 0) {
+      std::tie(first_wall, end_wall) = cell_walls(home_row, home_col);
+    }
+    if (end_wall == first_wall) {
       // No walls within reach.
-    } else if (wall_begin_[home + 1] - wall_begin_[home] > kWallList) {
+    } else if (end_wall - first_wall > kWallList) {
       // A finely divided boundary: the nearest wall, from the tree, is the deepest one.
       double d2 = reach * reach;
       const std::int32_t e = nearest_wall(p.x, p.y, d2);
@@ -690,7 +732,7 @@ class BoundaryFront {
         best_depth = reach - std::sqrt(d2);
       }
     } else {
-      for (std::uint32_t k = wall_begin_[home]; k < wall_begin_[home + 1]; ++k) {
+      for (std::uint32_t k = first_wall; k < end_wall; ++k) {
         const std::int32_t e = wall_ids_[k];
         const Wall& wl = walls_[wall_index(e)];
         const double d2 = distance2(wl, p.x, p.y);
@@ -1258,7 +1300,9 @@ class BoundaryFront {
 
   CellGrid grid_;
   HugeVector<std::int32_t> head_cell_;
-  std::vector<std::uint32_t> wall_begin_, fill_at_;
+  std::vector<std::uint32_t> wall_begin_, fill_at_;  // setup_grid() only: per cell
+  std::vector<std::uint32_t> block_first_;           // per block of cells: its first entry in cell_walls_
+  std::vector<std::uint32_t> cell_walls_;            // per cell of a walled block: its first wall in wall_ids_
   std::vector<std::int32_t> wall_ids_;
   std::vector<std::uint64_t> walled_;  // a bit per block of cells: any walls (setup_grid())
   std::size_t blocks_x_ = 1;
