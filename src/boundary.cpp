@@ -446,6 +446,11 @@ class BoundaryFront {
     // cell of the grid were 4 bytes per cell, 4 per disk at cells of rmax, most of them for
     // cells no wall comes near; the lists, and their order, are the same.
     block_first_.assign(blocks, 0);
+    std::size_t walled_blocks = 0;
+    for (const std::uint64_t bits : walled_) {
+      walled_blocks += static_cast<std::size_t>(std::popcount(bits));
+    }
+    cell_walls_.reserve(walled_blocks * (kBlock * kBlock + 1));
     std::vector<std::int32_t> ids;
     ids.reserve(wall_ids_.size());
     for (std::size_t b = 0; b < blocks; ++b) {
@@ -755,7 +760,10 @@ class BoundaryFront {
     const std::int64_t r1 = row(p.y + r_reach);
     visit_cells(head_cell_.data(), grid_.nx, nodes_.data(), kNone, c0, c1, r0, r1, [&](std::int32_t d, const Node& o) {
       const double dd = depth(p, o);
-      if (dd > 0 && (Any || best == kNone || dd > best_depth)) {
+      // Of two disks in the way as deep, the older: exact ties are the rule in the band where
+      // the exact predicate decides (depth_exact() says only whether), and the first in the
+      // order of the scan would depend on the size of the grid's cells.
+      if (dd > 0 && (Any || best == kNone || dd > best_depth || (dd == best_depth && d < best))) {
         best = d;
         best_depth = dd;
       }

@@ -105,8 +105,9 @@ template <class Node, class Visit>
   };
   assert(c0 >= 0 && c0 <= c1 && static_cast<std::size_t>(c1) < nx && r0 >= 0 && r0 <= r1);
   std::array<std::int32_t, kGatherCells> first;  // NOLINT(cppcoreguidelines-pro-type-member-init): written before read
-  // More cells than that: a clearance above about 2/3 rmax, or (rarely) a reach of nearly 2 rmax
-  // that straddles one more cell boundary than usual.
+  // More cells than that: always with a clearance c above about 2/3 rmax; below it, for a radius
+  // near rmax, with a probability of about (1.5 c / rmax)^2 (never, in practice, at the automatic
+  // clearance of a few ulps).
   if (cols * rows > first.size()) {
     for (std::size_t j = 0; j < rows; ++j) {
       for (std::size_t i = 0; i < cols; ++i) {
