@@ -136,9 +136,10 @@ BENCHMARK(BM_Once)
 
 // Issue #5's targets are measured "on the shapes/ domains with holes and reflex corners": each of
 // those shapes at about 1,000,000 disks, radii uniform in [R, 10 R] with R from the shape's area
-// (as tools/density_table.py chooses it for its 40,000). Manual time is the advancing front alone;
-// per_disk_us divides it by the disks kept (certified), per_generated_us by those generated (the
-// paper's forms fill each polygon's bounding box and cull what is not inside).
+// (as tools/density_table.py chooses it for its 40,000, without its rounding to two digits).
+// Manual time is the advancing front alone; per_disk_us divides it by the disks kept
+// (certified), per_generated_us by those generated (the paper's forms fill each polygon's
+// bounding box and cull what is not inside).
 // Arguments: shape (index into kShapes), method, fill_voids.
 //   build/release/bench/frontpack_bench_fill --benchmark_filter=Shape/
 constexpr const char* kShapes[] = {"annulus",    "big_polygon",    "comb",       "concave_polygon",
