@@ -395,7 +395,9 @@ class BoundaryFront {
 
     // Walls per cell (compressed rows): those meeting the cell grown by rmax + the clearance.
     const double reach = (rmax_ + clearance_) * (1 + 1e-9) + 4 * clearance_;
-    wall_begin_.assign(grid_.cells() + 1, 0);
+    // Per cell, while the lists are built: where its list begins, and where the next wall goes.
+    std::vector<std::uint32_t> wall_begin(grid_.cells() + 1, 0);
+    std::vector<std::uint32_t> fill_at;
     for (int pass = 0; pass < 2; ++pass) {
       for (std::size_t e = 0; e < walls_.size(); ++e) {
         const Wall& wl = walls_[e];
@@ -412,22 +414,22 @@ class BoundaryFront {
             }
             const std::size_t c = static_cast<std::size_t>(j) * grid_.nx + static_cast<std::size_t>(i);
             if (pass == 0) {
-              ++wall_begin_[c + 1];
+              ++wall_begin[c + 1];
             } else {
-              wall_ids_[fill_at_[c]++] = -(static_cast<std::int32_t>(e) + 1);
+              wall_ids_[fill_at[c]++] = -(static_cast<std::int32_t>(e) + 1);
             }
           }
         }
       }
       if (pass == 0) {
         for (std::size_t c = 0; c < grid_.cells(); ++c) {
-          wall_begin_[c + 1] += wall_begin_[c];
+          wall_begin[c + 1] += wall_begin[c];
         }
-        wall_ids_.assign(wall_begin_.back(), 0);
-        fill_at_.assign(wall_begin_.begin(), wall_begin_.end() - 1);
+        wall_ids_.assign(wall_begin.back(), 0);
+        fill_at.assign(wall_begin.begin(), wall_begin.end() - 1);
       }
     }
-    std::vector<std::uint32_t>().swap(fill_at_);
+    release(fill_at);
     // A bit per block of kBlock x kBlock cells: whether any of them has walls. Most probes lie in
     // blocks without, and the bits of a whole front fit in the first-level cache, unlike the
     // cells' lists (a tenth of the front's cache misses were reading them).
@@ -435,7 +437,7 @@ class BoundaryFront {
     const std::size_t blocks = blocks_x_ * ((grid_.ny + kBlock - 1) / kBlock);
     walled_.assign((blocks + 63) / 64, 0);
     for (std::size_t c = 0; c < grid_.cells(); ++c) {
-      if (wall_begin_[c + 1] > wall_begin_[c]) {
+      if (wall_begin[c + 1] > wall_begin[c]) {
         const std::size_t b = block_of(c / grid_.nx, c % grid_.nx);
         walled_[b / 64] |= std::uint64_t{1} << (b % 64);
       }
@@ -466,13 +468,12 @@ class BoundaryFront {
         const std::size_t j = by + l / kBlock;
         if (i < grid_.nx && j < grid_.ny) {
           const std::size_t c = j * grid_.nx + i;
-          ids.insert(ids.end(), wall_ids_.begin() + wall_begin_[c], wall_ids_.begin() + wall_begin_[c + 1]);
+          ids.insert(ids.end(), wall_ids_.begin() + wall_begin[c], wall_ids_.begin() + wall_begin[c + 1]);
         }
       }
       cell_walls_.push_back(static_cast<std::uint32_t>(ids.size()));
     }
     wall_ids_.swap(ids);
-    release(wall_begin_);
   }
 
   // The range of cell (row, col)'s walls in wall_ids_; only for a cell in a walled block.
@@ -1308,9 +1309,8 @@ class BoundaryFront {
 
   CellGrid grid_;
   HugeVector<std::int32_t> head_cell_;
-  std::vector<std::uint32_t> wall_begin_, fill_at_;  // setup_grid() only: per cell
-  std::vector<std::uint32_t> block_first_;           // per block of cells: its first entry in cell_walls_
-  std::vector<std::uint32_t> cell_walls_;            // per cell of a walled block: its first wall in wall_ids_
+  std::vector<std::uint32_t> block_first_;  // per block of cells: its first entry in cell_walls_
+  std::vector<std::uint32_t> cell_walls_;   // per cell of a walled block: its first wall in wall_ids_
   std::vector<std::int32_t> wall_ids_;
   std::vector<std::uint64_t> walled_;  // a bit per block of cells: any walls (setup_grid())
   std::size_t blocks_x_ = 1;
