@@ -102,6 +102,7 @@ constexpr std::size_t kLeafWalls = 4;    // walls per leaf of the wall tree
 // A vertex where the boundary turns by less than this (20 degrees) is no corner: the front does
 // not start there, and the wall layer slides across it (slide()).
 constexpr double kSlideTurn = 0.35;
+constexpr double kCosSlideTurn = 0.9393727128473789;  // cos(kSlideTurn), correctly rounded
 
 class BoundaryFront {
   struct Node {
@@ -295,6 +296,21 @@ class BoundaryFront {
   // ------------------------------------------------------------------------------------------
   // Walls, reflex vertices and the initial gaps.
 
+  // |(dx, dy)| from + - * / and a square root alone, all correctly rounded on every platform:
+  // std::hypot's last bit differs between C libraries, and every tangent to the wall, so every
+  // packing, would differ with it. At a power-of-two scale (exact), so that the squares neither
+  // overflow nor underflow.
+  static double length(double dx, double dy) noexcept {
+    const double m = std::max(std::abs(dx), std::abs(dy));
+    if (!(m > 0) || !std::isfinite(m)) {
+      return m;  // 0 for a zero-length edge (validation rejects them), or not finite
+    }
+    const int e = std::ilogb(m);
+    const double x = std::ldexp(dx, -e);
+    const double y = std::ldexp(dy, -e);
+    return std::ldexp(std::sqrt(x * x + y * y), e);
+  }
+
   void setup_walls() {
     auto add_ring = [&](const Ring& ring) {
       const std::size_t n = ring.size();
@@ -304,7 +320,7 @@ class BoundaryFront {
         const Point b = local(ring[(i + 1) % n]);
         const double dx = b.x - a.x;
         const double dy = b.y - a.y;
-        const double len = std::hypot(dx, dy);
+        const double len = length(dx, dy);
         Wall w{a.x, a.y, b.x, b.y, dx / len, dy / len, -dy / len, dx / len, len, 0};
         w.w = w.nx * a.x + w.ny * a.y;
         walls_.push_back(w);
@@ -1128,7 +1144,7 @@ class BoundaryFront {
       }
       const Wall& a = walls_[wall_index(w)];
       const Wall& b = walls_[wall_index(e)];
-      if (a.tx * b.tx + a.ty * b.ty < std::cos(kSlideTurn)) {
+      if (a.tx * b.tx + a.ty * b.ty < kCosSlideTurn) {
         return;
       }
       double qx = 0;
