@@ -303,7 +303,7 @@ class BoundaryFront {
   static double length(double dx, double dy) noexcept {
     const double m = std::max(std::abs(dx), std::abs(dy));
     if (!(m > 0) || !std::isfinite(m)) {
-      return m;  // 0 for a zero-length edge (validation rejects them), or not finite
+      return m;  // 0 where two vertices round to one local point (the wall then tests as nothing)
     }
     const int e = std::ilogb(m);
     const double x = std::ldexp(dx, -e);
@@ -350,24 +350,29 @@ class BoundaryFront {
         const Wall& wi = walls_[static_cast<std::size_t>(first) + i];
         const Wall& wo = walls_[static_cast<std::size_t>(first) + (i + 1) % n];
         const double cross = wi.tx * wo.ty - wi.ty * wo.tx;  // > 0: left turn, a convex corner
-        const double turn = std::abs(std::atan2(cross, wi.tx * wo.tx + wi.ty * wo.ty));
+        const double dot = wi.tx * wo.tx + wi.ty * wo.ty;    // the cosine of the turn
+        // A key that grows with the turn over [0, pi] (its sine, then 2 minus it), from * and -
+        // alone: with std::atan2, whose last bit differs between C libraries, the vertex that
+        // starts a ring without a corner could too.
+        const double turn = dot > 0 ? std::abs(cross) : 2 - std::abs(cross);
+        const bool sharp = dot <= kCosSlideTurn;  // turns by kSlideTurn or more
         const bool convex = cross > 1e-12;
         if (!convex) {
           vertex[i] = static_cast<std::int32_t>(corners_.size());
           corners_.push_back(Corner{wi.tx, wi.ty, wo.tx, wo.ty});
           corner_at_.push_back(Point{wi.bx, wi.by});
         }
-        if (turn >= kSlideTurn && wi.len < 2 * rmax_) {
+        if (sharp && wi.len < 2 * rmax_) {
           rough_[static_cast<std::size_t>(first) + i] = 1;
         }
-        if (turn >= kSlideTurn && wo.len < 2 * rmax_) {
+        if (sharp && wo.len < 2 * rmax_) {
           rough_[static_cast<std::size_t>(first) + (i + 1) % n] = 1;
         }
         if (turn > sharpest_turn) {
           sharpest_turn = turn;
           sharpest = i;
         }
-        if (turn >= kSlideTurn) {
+        if (sharp) {
           start_at(i, convex, vertex[i]);
         }
       }

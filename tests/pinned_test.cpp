@@ -4,11 +4,11 @@
 // docs/density.md is measured again.
 //
 // The open and boundary fronts compute with +, -, *, / and square roots alone (correctly rounded
-// everywhere; the boundary's wall lengths included, no longer std::hypot, whose last bit differs
-// between C libraries). C library functions only decide thresholds (std::atan2 for a corner's
-// turn, std::log and std::exp for the void classes' floors), where a last bit matters only in a
-// near tie; the closed form accumulates std::atan2 and is not pinned. The pins were taken on
-// x86-64 with glibc (GCC 12 and Clang 14 agree); elsewhere the tests are skipped.
+// everywhere; the boundary's wall lengths and corner turns included, no longer std::hypot and
+// std::atan2, whose last bits differ between C libraries). The only C library functions left
+// (std::log and std::exp for the void classes' floors) decide thresholds, where a last bit
+// matters only in a near tie; the closed form accumulates std::atan2 and is not pinned. The pins
+// were taken on x86-64 with glibc (GCC 12 and Clang 14 agree); elsewhere the tests are skipped.
 #include <gtest/gtest.h>
 
 #include <bit>
