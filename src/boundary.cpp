@@ -99,10 +99,10 @@ constexpr int kVoidMoves = 3;
 constexpr std::size_t kBlock = 16;       // cells per side of a block in the walled_ bitmap
 constexpr std::uint32_t kWallList = 16;  // a cell with more walls than this asks the wall tree
 constexpr std::size_t kLeafWalls = 4;    // walls per leaf of the wall tree
-// A vertex where the boundary turns by less than this (20 degrees) is no corner: the front does
-// not start there, and the wall layer slides across it (slide()).
-constexpr double kSlideTurn = 0.35;
-constexpr double kCosSlideTurn = 0.9393727128473789;  // cos(kSlideTurn), correctly rounded
+// kSlideTurn, 0.35 rad (20 degrees): a vertex where the boundary turns by less is no corner: the
+// front does not start there, and the wall layer slides across it (slide()). Used through its
+// cosine only, correctly rounded here (no C library call).
+constexpr double kCosSlideTurn = 0.9393727128473789;  // cos(0.35)
 
 class BoundaryFront {
   struct Node {
