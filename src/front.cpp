@@ -76,6 +76,11 @@ class Front {
     const double estimate = estimate_disks(box_, *req.radii);
     const auto reserve = static_cast<std::size_t>(std::min(estimate * 1.3 + 64, 1e9));
     nodes_.reserve(reserve + kFirstDisk);
+    {  // In one call, the pages of the nodes this box is expected to take (huge_pages.hpp).
+      const double budget = req.max_disks == 0 ? estimate : static_cast<double>(req.max_disks);
+      const double expected = std::min(std::min(estimate, budget) + kFirstDisk, static_cast<double>(nodes_.capacity()));
+      prefault(nodes_, expected >= 0 ? static_cast<std::size_t>(expected) : 0);
+    }
     next_.reserve(reserve + kFirstDisk);
     prev_.reserve(reserve + kFirstDisk);
     if (list_) {
@@ -715,16 +720,17 @@ class Front {
   double ox_ = 0;
   double oy_ = 0;
 
-  HugeVector<Node> nodes_;
-  HugeVector<std::int32_t> next_, prev_;
-  bool list_ = false;                       // keep the list below (closed form, elongated box)
-  HugeVector<std::int32_t> anext_, aprev_;  // the active segments, in front order
+  // Ordinary pages (huge_pages.hpp): these fronts read near the front only.
+  std::vector<Node> nodes_;
+  std::vector<std::int32_t> next_, prev_;
+  bool list_ = false;                        // keep the list below (closed form, elongated box)
+  std::vector<std::int32_t> anext_, aprev_;  // the active segments, in front order
   std::size_t active_ = 0;
   std::size_t front_size_ = 0;
   std::int32_t retired_ = kNone;  // place_on()'s retired segment
 
   CellGrid grid_;
-  HugeVector<std::int32_t> head_;
+  std::vector<std::int32_t> head_;
 
   struct VoidSeg {
     std::int32_t a, b;

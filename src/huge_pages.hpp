@@ -1,9 +1,17 @@
-// An allocator for the generators' large working arrays (the nodes, the front links, the grid's
-// cell heads): blocks of 2 MiB and more are aligned to 2 MiB and offered to the kernel for
-// transparent huge pages (Linux, madvise). A million-disk front touches tens of megabytes; with
-// 4 KiB pages that is thousands of page faults and, in the grid scans, TLB misses. Elsewhere, and
-// for small blocks, it is the standard allocator. Also move_out(), which copies the nodes out as
-// disks while giving their memory back. Header-only and CGAL-free (hot loops).
+// Memory for the generators' large working arrays, and two page-level helpers.
+//
+// HugePageAllocator: blocks of 2 MiB and more are aligned to 2 MiB and offered to the kernel for
+// transparent huge pages (Linux, madvise); elsewhere, and for small blocks, the standard
+// allocator. For arrays read at random across the whole run: the boundary front's nodes, links
+// and cell heads, which its voids send the scans all over (4 KiB pages cost that front 8-10%).
+// The paper's fronts read near the front only (the last layer's nodes and cells), so their arrays
+// are ordinary vectors, and their nodes are prefaulted in one call (prefault()) instead of a page
+// fault per 4 KiB: on this project's VM a huge page first touched costs several times what the
+// same memory costs in 4 KiB pages once the run needs more than the machine has just freed (10M
+// disks: kernel time 0.9-1.1 s with huge pages against 0.4 s, docs/performance.md).
+//
+// discard() gives pages of a vector's storage back; move_out() copies the nodes out as disks while
+// giving their memory back. Header-only and CGAL-free (hot loops).
 #pragma once
 
 #include <algorithm>
@@ -14,6 +22,7 @@
 #include <limits>
 #include <memory>
 #include <new>
+#include <utility>
 #include <vector>
 
 #if defined(__linux__)
@@ -75,17 +84,26 @@ struct HugePageAllocator {
 template <class T>
 using HugeVector = std::vector<T, HugePageAllocator<T>>;
 
+namespace page {
+constexpr std::size_t kSize = 4096;
+// The whole pages of v's storage in elements [begin, end), as [first, last) (empty: last <= first).
+// Whole pages only: the allocator's own bookkeeping may share the first and last page.
+template <class T, class A>
+std::pair<std::uintptr_t, std::uintptr_t> inside(const std::vector<T, A>& v, std::size_t begin,
+                                                 std::size_t end) noexcept {
+  const auto base = reinterpret_cast<std::uintptr_t>(v.data());  // NOLINT(*-reinterpret-cast)
+  return {(base + begin * sizeof(T) + kSize - 1) / kSize * kSize, (base + end * sizeof(T)) / kSize * kSize};
+}
+}  // namespace page
+
 /// Gives the whole pages of `v`'s storage in elements [begin, end) back to the kernel (Linux,
 /// MADV_DONTNEED; elsewhere nothing): for a vector that is read once more from front to back
 /// before it is freed. Those elements must not be read again.
-template <class T>
-void discard(HugeVector<T>& v, std::size_t begin, std::size_t end) noexcept {
+template <class T, class A>
+void discard(std::vector<T, A>& v, std::size_t begin, std::size_t end) noexcept {
   assert(begin <= end && end <= v.size());
 #if defined(__linux__)
-  constexpr std::size_t kPage = 4096;
-  const auto base = reinterpret_cast<std::uintptr_t>(v.data());  // NOLINT(*-reinterpret-cast)
-  const std::uintptr_t first = (base + begin * sizeof(T) + kPage - 1) / kPage * kPage;
-  const std::uintptr_t last = (base + end * sizeof(T)) / kPage * kPage;
+  const auto [first, last] = page::inside(v, begin, end);
   if (last > first) {
     ::madvise(reinterpret_cast<void*>(first), last - first, MADV_DONTNEED);  // NOLINT(*-reinterpret-cast)
   }
@@ -96,6 +114,24 @@ void discard(HugeVector<T>& v, std::size_t begin, std::size_t end) noexcept {
 #endif
 }
 
+/// Faults in the whole pages of `v`'s reserved storage for elements [0, n) (n <= capacity) in one
+/// call (Linux 5.14+, MADV_POPULATE_WRITE; advice only: elsewhere, or on failure, the pages are
+/// faulted one at a time as they are first written, as without it). Costs nothing in memory that
+/// the first n push_backs would not touch anyway.
+template <class T, class A>
+void prefault(std::vector<T, A>& v, std::size_t n) noexcept {
+  assert(n <= v.capacity());
+#if defined(__linux__) && defined(MADV_POPULATE_WRITE)
+  const auto [first, last] = page::inside(v, 0, n);
+  if (last > first) {
+    ::madvise(reinterpret_cast<void*>(first), last - first, MADV_POPULATE_WRITE);  // NOLINT(*-reinterpret-cast)
+  }
+#else
+  (void)v;
+  (void)n;
+#endif
+}
+
 /// Appends the disks of nodes[first, size), shifted by `origin`, to `out` and frees the nodes.
 /// The copy gives the nodes' memory back as it goes, a 2 MiB block of the nodes' storage at a
 /// time, so that the output's fresh pages are the ones just given back: the peak holds the nodes
@@ -103,8 +139,8 @@ void discard(HugeVector<T>& v, std::size_t begin, std::size_t end) noexcept {
 /// used (a VM's first touch of memory the host has reclaimed is several times slower). The
 /// output is reserved first, so that it never moves (and nothing throws) while nodes are
 /// discarded.
-template <class Node>
-void move_out(HugeVector<Node>& nodes, std::size_t first, Point origin, std::vector<Disk>& out) {
+template <class Node, class A>
+void move_out(std::vector<Node, A>& nodes, std::size_t first, Point origin, std::vector<Disk>& out) {
   static_assert(sizeof(Node) <= HugePageAllocator<Node>::kHuge);
   constexpr std::size_t kStep = HugePageAllocator<Node>::kHuge / sizeof(Node);
   if (const std::size_t n = nodes.size() - std::min(first, nodes.size()); out.capacity() - out.size() < n) {
@@ -119,7 +155,7 @@ void move_out(HugeVector<Node>& nodes, std::size_t first, Point origin, std::vec
     discard(nodes, done, end);
     done = end;
   }
-  HugeVector<Node>().swap(nodes);
+  std::vector<Node, A>().swap(nodes);
 }
 
 }  // namespace frontpack::detail
