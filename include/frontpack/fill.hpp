@@ -79,7 +79,7 @@ struct FillOptions {
   std::size_t memory_limit = 0;
 };
 
-/// The documented bound on fill()'s peak memory per generated disk (measured 41-61 bytes on the
+/// The documented bound on fill()'s peak memory per generated disk (measured 42-61 bytes on the
 /// 1M-, 10M- and 100M-disk benchmarks, the boundary method the most; docs/performance.md).
 inline constexpr std::size_t peak_bytes_per_disk = 64;
 
