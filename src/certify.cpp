@@ -23,38 +23,46 @@ namespace detail {
 namespace {
 
 // Runs CGAL::box_self_intersection_d over the disks listed in `batch` (the first `own` are one
-// strip's, the rest guests from the next strip), with boxes of number type NT (float halves the
+// tile's, the rest guests from its neighbours), with boxes of number type NT (float halves the
 // memory and speeds the sweep; used when every coordinate fits a float), each rounded outwards so
 // that the exact box [x - r, x + r] x [y - r, y + r] lies inside it. A box's handle points at its
-// batch entry: the entry gives the disk, its position whether the disk is a guest.
+// disk's copy in `local` (a buffer reused from tile to tile), in batch order: its position there
+// gives the disk's index (through `batch`) and whether it is a guest.
 //
 // Far from the origin a float cannot tell nearby disks apart (at 8e9 its step is 1024): float boxes
 // are taken relative to `origin` (the smallest centre coordinates), widened by a bound on the
 // rounding of the two subtractions, so that they stay tight there too.
 template <class NT>
 void box_pass(std::span<const Disk> disks, const std::vector<std::uint32_t>& batch, std::size_t own,
-              std::vector<std::pair<std::size_t, std::size_t>>& out, std::size_t& candidates, Point origin) {
-  using Box = CGAL::Box_intersection_d::Box_with_handle_d<NT, 2, const std::uint32_t*,
-                                                          CGAL::Box_intersection_d::ID_FROM_HANDLE>;
+              std::vector<std::pair<std::size_t, std::size_t>>& out, std::size_t& candidates, Point origin,
+              std::vector<Disk>& local) {
+  using Box = CGAL::Box_intersection_d::Box_with_handle_d<NT, 2, const Disk*, CGAL::Box_intersection_d::ID_FROM_HANDLE>;
   constexpr NT inf = std::numeric_limits<NT>::infinity();
   // One step below the rounded difference is below the exact one; converting to float rounds to
   // nearest, so one more float step down keeps it below.
   const auto down = [](double v) { return std::nextafter(static_cast<NT>(next_down(v)), -inf); };
   const auto up = [](double v) { return std::nextafter(static_cast<NT>(next_up(v)), inf); };
+  // The batch's disks copied out in batch order: the sweep reports pairs in no order, and the
+  // pair test then reads this tile's copies instead of disks anywhere in the packing (a packing
+  // whose disks were placed in voids all over the domain, the boundary method's, is in no
+  // spatial order).
+  local.clear();
+  for (const std::uint32_t i : batch) {
+    local.push_back(disks[i]);
+  }
   std::vector<Box> boxes;
   boxes.reserve(batch.size());
   // (c - r) - o rounds twice, each time by at most 2^-53 of a magnitude below |c| + r + |o|.
   const auto err = [](double c, double r, double o) { return 0x1p-51 * (std::abs(c) + r + std::abs(o)); };
-  for (const std::uint32_t& i : batch) {
-    const Disk& d = disks[i];
+  for (const Disk& d : local) {
     const double x = d.centre.x;
     const double y = d.centre.y;
     const double r = d.radius;
     NT lo[2] = {down(((x - r) - origin.x) - err(x, r, origin.x)), down(((y - r) - origin.y) - err(y, r, origin.y))};
     NT hi[2] = {up(((x + r) - origin.x) + err(x, r, origin.x)), up(((y + r) - origin.y) + err(y, r, origin.y))};
-    boxes.emplace_back(lo, hi, &i);
+    boxes.emplace_back(lo, hi, &d);
   }
-  const std::uint32_t* guests = batch.data() + own;
+  const Disk* guests = local.data() + own;
   // A cutoff of 4000 measured fastest for this use (docs/design-notes.md).
   CGAL::box_self_intersection_d(
       boxes.begin(), boxes.end(),
@@ -63,10 +71,11 @@ void box_pass(std::span<const Disk> disks, const std::vector<std::uint32_t>& bat
           return;  // both from the next strip: its own pass decides them
         }
         ++candidates;
-        const std::size_t i = *a.handle();
-        const std::size_t j = *b.handle();
-        if (compare_centre_distance(disks[i].centre, disks[j].centre, disks[i].radius, disks[j].radius) ==
-            CGAL::SMALLER) {
+        const Disk& p = *a.handle();
+        const Disk& q = *b.handle();
+        if (compare_centre_distance(p.centre, q.centre, p.radius, q.radius) == CGAL::SMALLER) {
+          const std::size_t i = batch[static_cast<std::size_t>(&p - local.data())];
+          const std::size_t j = batch[static_cast<std::size_t>(&q - local.data())];
           out.emplace_back(std::min(i, j), std::max(i, j));
         }
       },
@@ -85,8 +94,10 @@ void overlapping_pairs(std::span<const Disk> disks, std::vector<std::pair<std::s
   // pair of neighbouring tiles is searched once; a guest joins if its box meets the box of the
   // tile's own disks, and pairs of two guests are left to their own tiles. Each CGAL run sees
   // about kChunk disks: linear time overall, and box memory for one tile at a time. (Thin strips
-  // instead of tiles measured slower: CGAL's sweep prefers square batches.)
-  constexpr std::size_t kChunk = 1 << 18;
+  // instead of tiles measured slower: CGAL's sweep prefers square batches. With the batch's disks
+  // copied out, 2^17 measured as fast as 2^18 without its 7 bytes per disk more peak memory at 1M
+  // disks, and 2^16, 2^15 and 2^13 slower; docs/performance.md.)
+  constexpr std::size_t kChunk = std::size_t{1} << 17;
   Box all;
   double rmax = 0;
   bool fits_float = true;
@@ -147,6 +158,7 @@ void overlapping_pairs(std::span<const Disk> disks, std::vector<std::pair<std::s
     }
   }
   std::vector<std::uint32_t> batch;
+  std::vector<Disk> local;
   for (std::size_t j = 0; j < ty; ++j) {
     for (std::size_t i = 0; i < tx; ++i) {
       const std::size_t t = j * tx + i;
@@ -183,9 +195,9 @@ void overlapping_pairs(std::span<const Disk> disks, std::vector<std::pair<std::s
       guest_tile(0, 1);
       guest_tile(1, 1);
       if (fits_float) {
-        box_pass<float>(disks, batch, own, out, candidates, Point{all.xmin, all.ymin});
+        box_pass<float>(disks, batch, own, out, candidates, Point{all.xmin, all.ymin}, local);
       } else {
-        box_pass<double>(disks, batch, own, out, candidates, Point{0, 0});
+        box_pass<double>(disks, batch, own, out, candidates, Point{0, 0}, local);
       }
     }
   }
