@@ -68,7 +68,7 @@ void box_pass(std::span<const Disk> disks, const std::vector<std::uint32_t>& bat
       boxes.begin(), boxes.end(),
       [&](const Box& a, const Box& b) {
         if (a.handle() >= guests && b.handle() >= guests) {
-          return;  // both from the next strip: its own pass decides them
+          return;  // both guests: their own tile's pass decides them
         }
         ++candidates;
         const Disk& p = *a.handle();

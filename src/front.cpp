@@ -46,13 +46,16 @@ constexpr int kVoidClasses = 16;   // void buckets (log-spaced radius classes), 
 
 template <bool Open>
 class Front {
-  // One record per node, so that an overlap test touches one cache line.
-  struct Node {
+  // One record per node, so that an overlap test touches one cache line (aligned to its size: the
+  // standard allocator's large blocks start 16 bytes into a line, where every other record would
+  // straddle two).
+  struct alignas(32) Node {
     double x, y, r;
     std::int32_t cell_next;  // next node in the same grid cell
     std::uint8_t inside;     // centre in the box (the bottom wall counts as inside, side walls not)
     std::uint8_t blocked;    // the segment starting here is retired
   };
+  static_assert(sizeof(Node) == 32);
 
  public:
   Front(const FrontRequest& req, Rng& rng, std::vector<Disk>& out, FillStats& stats)
@@ -77,7 +80,8 @@ class Front {
     const auto reserve = static_cast<std::size_t>(std::min(estimate * 1.3 + 64, 1e9));
     nodes_.reserve(reserve + kFirstDisk);
     {  // In one call, the pages of the nodes this box is expected to take (huge_pages.hpp).
-      const double budget = req.max_disks == 0 ? estimate : static_cast<double>(req.max_disks);
+      const double budget =
+          req.max_disks == 0 ? estimate : static_cast<double>(req.max_disks - std::min(req.max_disks, out_.size()));
       const double expected = std::min(std::min(estimate, budget) + kFirstDisk, static_cast<double>(nodes_.capacity()));
       prefault(nodes_, expected >= 0 ? static_cast<std::size_t>(expected) : 0);
     }
@@ -720,7 +724,7 @@ class Front {
   double ox_ = 0;
   double oy_ = 0;
 
-  // Ordinary pages (huge_pages.hpp): these fronts read near the front only.
+  // Not HugeVector (huge_pages.hpp): these fronts read near the front only.
   std::vector<Node> nodes_;
   std::vector<std::int32_t> next_, prev_;
   bool list_ = false;                        // keep the list below (closed form, elongated box)

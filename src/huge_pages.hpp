@@ -1,17 +1,18 @@
-// Memory for the generators' large working arrays, and two page-level helpers.
+// Memory for the generators' large working arrays, and page-level helpers for them.
 //
 // HugePageAllocator: blocks of 2 MiB and more are aligned to 2 MiB and offered to the kernel for
 // transparent huge pages (Linux, madvise); elsewhere, and for small blocks, the standard
 // allocator. For arrays read at random across the whole run: the boundary front's nodes, links
 // and cell heads, which its voids send the scans all over (4 KiB pages cost that front 8-10%).
 // The paper's fronts read near the front only (the last layer's nodes and cells), so their arrays
-// are ordinary vectors, and their nodes are prefaulted in one call (prefault()) instead of a page
-// fault per 4 KiB: on this project's VM a huge page first touched costs several times what the
+// are ordinary vectors (4 KiB pages, unless the machine's transparent huge pages are set to
+// `always`), and their nodes are prefaulted in one call (prefault()) instead of a page fault per
+// 4 KiB: on this project's VM a huge page first touched costs several times what the
 // same memory costs in 4 KiB pages once the run needs more than the machine has just freed (10M
 // disks: kernel time 0.9-1.1 s with huge pages against 0.4 s, docs/performance.md).
 //
-// discard() gives pages of a vector's storage back; move_out() copies the nodes out as disks while
-// giving their memory back. Header-only and CGAL-free (hot loops).
+// discard() gives pages of a vector's storage back; prefault() faults them in ahead; move_out()
+// copies the nodes out as disks while giving their memory back. Header-only and CGAL-free (hot loops).
 #pragma once
 
 #include <algorithm>
@@ -116,8 +117,8 @@ void discard(std::vector<T, A>& v, std::size_t begin, std::size_t end) noexcept 
 
 /// Faults in the whole pages of `v`'s reserved storage for elements [0, n) (n <= capacity) in one
 /// call (Linux 5.14+, MADV_POPULATE_WRITE; advice only: elsewhere, or on failure, the pages are
-/// faulted one at a time as they are first written, as without it). Costs nothing in memory that
-/// the first n push_backs would not touch anyway.
+/// faulted one at a time as they are first written, as without it). Costs no memory beyond what
+/// the first n push_backs would touch: n is the caller's estimate of what the run will use.
 template <class T, class A>
 void prefault(std::vector<T, A>& v, std::size_t n) noexcept {
   assert(n <= v.capacity());
