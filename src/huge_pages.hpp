@@ -3,16 +3,19 @@
 // HugePageAllocator: blocks of 2 MiB and more are aligned to 2 MiB and offered to the kernel for
 // transparent huge pages (Linux, madvise); elsewhere, and for small blocks, the standard
 // allocator. For arrays read at random across the whole run: the boundary front's nodes, links
-// and cell heads, which its voids send the scans all over (4 KiB pages cost that front 8-10%).
+// and cell heads, which its voids send the scans all over (4 KiB pages cost that front 8-10% with
+// a fault per page, 3.5% prefaulted).
+//
 // The paper's fronts read near the front only (the last layer's nodes and cells), so their arrays
-// are ordinary vectors (4 KiB pages, unless the machine's transparent huge pages are set to
-// `always`), and their nodes are prefaulted in one call (prefault()) instead of a page fault per
-// 4 KiB: on this project's VM a huge page first touched costs several times what the
-// same memory costs in 4 KiB pages once the run needs more than the machine has just freed (10M
-// disks: kernel time 0.9-1.1 s with huge pages against 0.4 s, docs/performance.md).
+// are ordinary vectors (4 KiB pages, unless the machine's transparent huge pages are `always`),
+// and their nodes are prefaulted in one call (prefault()) instead of a fault per 4 KiB: on this
+// project's VM a huge page first touched costs several times what the same memory costs in 4 KiB
+// pages once a run needs more than the machine has just freed (10M disks: kernel time 0.9-1.1 s
+// with huge pages against 0.4 s; docs/performance.md).
 //
 // discard() gives pages of a vector's storage back; prefault() faults them in ahead; move_out()
-// copies the nodes out as disks while giving their memory back. Header-only and CGAL-free (hot loops).
+// copies the nodes out as disks while giving their memory back. Header-only and CGAL-free (hot
+// loops).
 #pragma once
 
 #include <algorithm>
