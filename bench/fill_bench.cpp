@@ -2,7 +2,8 @@
 // one thread. Run each alone so that the peak-memory counter means something:
 //   build/release/bench/frontpack_bench_fill --benchmark_filter=Core
 //   build/release/bench/frontpack_bench_fill --benchmark_filter=Pipeline/1/
-//   build/release/bench/frontpack_bench_fill --benchmark_filter=Pipeline/10/
+//   build/release/bench/frontpack_bench_fill --benchmark_filter=Pipeline/10/1/   (open, ~10M disks)
+//   build/release/bench/frontpack_bench_fill --benchmark_filter=Pipeline/10/2/   (boundary)
 //   build/release/bench/frontpack_bench_fill --benchmark_filter=Pipeline/100/   (100M disks, 5.4 GB)
 // "Core" times the advancing front alone (FillStats::seconds_front, manual time); "Pipeline"
 // times fill() end to end: generation + exact cull + CGAL overlap pass. The last argument is
