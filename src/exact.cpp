@@ -1,5 +1,6 @@
 #include "exact.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -72,8 +73,13 @@ CGAL::Comparison_result compare_distance_to_segment(Point c, Point a, Point b, d
 CGAL::Comparison_result compare_centre_distance(Point c1, Point c2, double r1, double r2) {
   // Semi-static filter. With u = 2^-53, the computed d2 = dx^2 + dy^2 has relative error at most
   // 4u, s2 = (r1 + r2)^2 at most 3u, and their difference adds u: |error| <= 5u (d2 + s2), plus
-  // at most 16 subnormal units of absolute error if products underflow. Outside 8u (d2 + s2)
-  // the sign is certain; inside it, or on overflow, intervals and then exact arithmetic decide.
+  // at most 16 subnormal units (2^-1070) of absolute error if products underflow. Outside
+  // max(8u (d2 + s2), 2^-1000) the sign is certain (where 3u (d2 + s2) < 2^-1070, d2 + s2 is below
+  // 2^-1017 and the error below 2^-1066); inside it, or on overflow, intervals and then exact
+  // arithmetic decide. The floor is a normal number: the bound used to add 16 * denorm_min(),
+  // which GCC (with CGAL's -frounding-math) converted from an x87 constant at run time, and the
+  // store of that subnormal cost Intel processors a microcode assist on every pair (a third of
+  // the boundary method's pipeline on a Xeon; AMD's have no such penalty).
   {
     const double dx = c1.x - c2.x;
     const double dy = c1.y - c2.y;
@@ -83,7 +89,7 @@ CGAL::Comparison_result compare_centre_distance(Point c1, Point c2, double r1, d
     const double diff = d2 - s2;
     const double size = d2 + s2;
     if (std::isfinite(diff) && std::isfinite(size)) {
-      const double bound = 8 * 0x1p-53 * size + 16 * std::numeric_limits<double>::denorm_min();
+      const double bound = std::max(8 * 0x1p-53 * size, 0x1p-1000);
       if (diff > bound) {
         return CGAL::LARGER;
       }

@@ -88,3 +88,23 @@ TEST(CertifyReport, FarFromTheOriginTheOverlapPassStaysLocal) {
   EXPECT_TRUE(r.outside.empty());
   EXPECT_LT(r.certificate.candidate_pairs, 10 * disks.size());
 }
+
+// The pair test is exact at every scale, down to subnormal coordinates: a 3-4-5 pair that touches
+// is no overlap, and the same pair one ulp closer (the larger radius one ulp larger) is one, one
+// ulp apart (one ulp smaller) is none. At the smallest scales the squares underflow (to zero, or
+// to subnormals with the low bits lost), so only the exact fallback can tell the three apart; at
+// 2^-509 they are normal but differ by a subnormal amount, the semi-static filter's floor.
+TEST(CertifyReport, PairTestIsExactDownToSubnormals) {
+  const fp::Domain domain = fp::Domain::from_wkt("POLYGON((-1 -1,1 -1,1 1,-1 1,-1 -1))");
+  for (const double s : {1.0, 0x1p-500, 0x1p-509, 0x1p-530, 0x1p-1000, 0x1p-1060, 0x1p-1070}) {
+    SCOPED_TRACE(s);
+    const double r = 3 * s;
+    const fp::Disk a{{0, 0}, 2 * s};
+    const fp::Disk touching{{3 * s, 4 * s}, r};
+    const fp::Disk closer{{3 * s, 4 * s}, std::nextafter(r, 2 * r)};
+    const fp::Disk apart{{3 * s, 4 * s}, std::nextafter(r, 0.0)};
+    EXPECT_TRUE(fp::certify(domain, std::vector<fp::Disk>{a, touching}).overlapping.empty());
+    EXPECT_EQ(fp::certify(domain, std::vector<fp::Disk>{a, closer}).overlapping.size(), 1u);
+    EXPECT_TRUE(fp::certify(domain, std::vector<fp::Disk>{a, apart}).overlapping.empty());
+  }
+}
