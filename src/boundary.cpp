@@ -731,9 +731,11 @@ class BoundaryFront {
   // most 3/4 of the clearance) in which depth() and the wall test can see an overlap.
   // With Any, the first element found that the candidate overlaps: for callers that only need to
   // know whether there is one (most candidates that get this far overlap something, and the scan
-  // ends there).
+  // ends there). With `quick`, the gap whose candidate this is, and no wall in the way, the disks
+  // in_the_way() tries are asked first, and the first of them in the way is returned: for a gap
+  // whose try fails on any disk (no move, which only a wall in the way would start).
   template <bool Any = false>
-  std::int32_t deepest(const Probe& p) {
+  std::int32_t deepest(const Probe& p, const Gap* quick = nullptr) {
     std::int32_t best = kNone;
     double best_depth = 0;
     const auto home_col = static_cast<std::size_t>(col(p.x));
@@ -775,6 +777,11 @@ class BoundaryFront {
         }
       }
     }
+    if (quick != nullptr && best == kNone) {
+      if (const std::int32_t e = in_the_way(quick->a, quick->b, p); e != kNone) {
+        return e;
+      }
+    }
     const double r_reach = (p.r_hi + rmax_) * (1 + 1e-9);  // depth() can say yes up to r_hi + o.r
     const std::int64_t c0 = col(p.x - r_reach);
     const std::int64_t c1 = col(p.x + r_reach);
@@ -792,6 +799,32 @@ class BoundaryFront {
       return Any && dd > 0;
     });
     return best;
+  }
+
+  // A disk in the way of the candidate for gap (x, y) among those most often there, or kNone: the
+  // gap's neighbours on the front (the first element of the last gap with x second, the second of
+  // the last with y first) and the disks of the candidate's own cell. Most tries fail (on the 1M
+  // square, 64% of front gaps and 31% of voids), and more than half of the failures are settled
+  // here, for a node or two and one cell head instead of a scan of some 18 cells and 8 disks.
+  // Whatever is found is in the way, so the try fails exactly when the scan would have made it
+  // fail; but it is not always the deepest element, and the void the gap leaves is bounded by
+  // the pocket this one leaves (a bound all the same), so packings differ from the scan's.
+  std::int32_t in_the_way(std::int32_t x, std::int32_t y, const Probe& p) {
+    const std::int32_t before = is_disk(x) ? before_[static_cast<std::size_t>(x)] : kNone;
+    if (is_disk(before) && depth(p, nodes_[static_cast<std::size_t>(before)]) > 0) {
+      return before;
+    }
+    const std::int32_t after = is_disk(y) ? nodes_[static_cast<std::size_t>(y)].after : kNone;
+    if (is_disk(after) && depth(p, nodes_[static_cast<std::size_t>(after)]) > 0) {
+      return after;
+    }
+    for (std::int32_t e = head_cell_[cell_of(p.x, p.y)]; e != kNone;
+         e = nodes_[static_cast<std::size_t>(e)].cell_next) {
+      if (depth(p, nodes_[static_cast<std::size_t>(e)]) > 0) {
+        return e;
+      }
+    }
+    return kNone;
   }
 
   // Whether the candidate really touches parent e where it should: its foot on a wall lies on the
@@ -1202,8 +1235,11 @@ class BoundaryFront {
       }
       const Probe p = probe(px, py, r);
       // At the last move, only whether anything is in the way matters (but not at the first: its
-      // deepest element bounds the void the gap leaves).
-      const std::int32_t d = move == moves && move > 0 ? deepest<true>(p) : deepest(p);
+      // deepest element bounds the void the gap leaves). In the interior, the disks most often in
+      // the way are tried first (in_the_way()): one of them bounds the void as well.
+      const Gap first{x, y};
+      const std::int32_t d =
+          move == moves && move > 0 ? deepest<true>(p) : deepest(p, move == 0 && !walled ? &first : nullptr);
       if (d == kNone) {
         if (!supported_by(x, px, py) || !supported_by(y, px, py)) {
           return false;
@@ -1312,7 +1348,7 @@ class BoundaryFront {
   double area_ = 0;
   double polygon_area_ = 0;  // shoelace, for the seeding rule
   int seeds_ = 0;
-  std::int32_t blocker_ = kNone;  // the deepest overlap at a failed gap's first position
+  std::int32_t blocker_ = kNone;  // an element in the way at a failed gap's first position
   bool hopeless_ = false;         // the failed gap takes no disk of the radius tried or smaller
 
   std::vector<Wall> walls_;
