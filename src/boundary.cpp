@@ -804,8 +804,9 @@ class BoundaryFront {
   // A disk in the way of the candidate for gap (x, y) among those most often there, or kNone: the
   // gap's neighbours on the front (the first element of the last gap with x second, the second of
   // the last with y first) and the disks of the candidate's own cell. Most tries fail (on the 1M
-  // square, 64% of front gaps and 31% of voids), and more than half of the failures are settled
-  // here, for a node or two and one cell head instead of a scan of some 18 cells and 8 disks.
+  // square, 64% of front gaps and 31% of voids), and 56% of the failures are settled here, for a
+  // node or two and one cell head instead of a scan of some 18 cells and 8 disks (front 8-13%
+  // faster, docs/performance.md).
   // Whatever is found is in the way, so the try fails exactly when the scan would have made it
   // fail; but it is not always the deepest element, and the void the gap leaves is bounded by
   // the pocket this one leaves (a bound all the same), so packings differ from the scan's.
