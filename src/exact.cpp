@@ -79,7 +79,7 @@ CGAL::Comparison_result compare_centre_distance(Point c1, Point c2, double r1, d
   // arithmetic decide. The floor is a normal number: the bound used to add 16 * denorm_min(),
   // which GCC (with CGAL's -frounding-math) converted from an x87 constant at run time, and the
   // store of that subnormal cost Intel processors a microcode assist on every pair (a third of
-  // the boundary method's pipeline on a Xeon; AMD's have no such penalty).
+  // the boundary method's pipeline on a Xeon; no profile on an AMD EPYC showed it).
   {
     const double dx = c1.x - c2.x;
     const double dy = c1.y - c2.y;
