@@ -27,11 +27,14 @@
 // Voids. A gap where the drawn disk does not fit is not thrown away: it is kept in a bucket by the
 // most it can take (log-spaced radius classes between rmin and rmax): the radius that failed there,
 // or less, the radius of the pocket between its two elements and the element in the way (pocket():
-// Apollonius' problem for three disks, two disks and a wall, or a disk and two walls). A disk
-// placed in a void away from the boundary, touching the void's own two elements, splits it: the
-// two pockets between the new disk, one of its parents and the void's bounding element are kept
-// as voids the same way, not queued on the front, unless that element bounds no pocket there or
-// leaves it room for rmax. Also kept: the cusp between a new disk, a wall it touches
+// Apollonius' problem for three disks, two disks and a wall, or a disk and two walls). Away from
+// the walls the element in the way is the first found among the disks most often there (the
+// gap's front neighbours and the disks of the candidate's cell: in_the_way()), and the grid is
+// scanned only when none of them is, for the deepest element or for none. A disk placed in a
+// void away from the boundary, touching the void's own two elements, splits it: the two pockets
+// between the new disk, one of its parents and the void's bounding element are kept as voids the
+// same way, not queued on the front, unless that element bounds no pocket there or leaves it
+// room for rmax. Also kept: the cusp between a new disk, a wall it touches
 // and its other parent, and the pocket on the far side of two disk parents that a move brought
 // together (if less than 4 rmin apart, worth_a_void(); bounded by the parent the move replaced).
 // Each new radius is tried first in the voids, those on a rough wall first, in the tightest class
