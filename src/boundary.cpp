@@ -1238,9 +1238,9 @@ class BoundaryFront {
         return false;  // outside the polygon's box, so outside the polygon
       }
       const Probe p = probe(px, py, r);
-      // At the last move, only whether anything is in the way matters (but not at the first: its
-      // deepest element bounds the void the gap leaves). In the interior, the disks most often in
-      // the way are tried first (in_the_way()): one of them bounds the void as well.
+      // At the last move, only whether anything is in the way matters (but not at the first: the
+      // element it finds bounds the void the gap leaves, the deepest one if the grid is scanned).
+      // In the interior, the disks most often in the way are tried before the scan (in_the_way()).
       const Gap first{x, y};
       const std::int32_t d =
           move == moves && move > 0 ? deepest<true>(p) : deepest(p, move == 0 && !walled ? &first : nullptr);
