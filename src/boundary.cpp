@@ -132,7 +132,7 @@ class BoundaryFront {
 
  public:
   BoundaryFront(const BoundaryRequest& req, Rng& rng, std::vector<Disk>& out, FillStats& stats)
-      : req_(req), rng_(rng), out_(out), stats_(stats), control_(req.max_disks, req.tick) {
+      : req_(req), rng_(rng), out_(out), stats_(stats), control_(req.max_disks, req.tick), out_before_(out.size()) {
     Box box;
     for (const Point& p : req.polygon->outer) {
       box.extend(p);
@@ -242,7 +242,9 @@ class BoundaryFront {
   }
 
  private:
-  [[nodiscard]] std::size_t placed() const noexcept { return nodes_.size() - corners_.size() + out_.size(); }
+  [[nodiscard]] std::size_t placed() const noexcept {
+    return nodes_.size() - static_cast<std::size_t>(corner_count_) + out_before_;
+  }
   // Whether front gap g has been overtaken: a later gap paired its first disk with another second
   // element, or its second disk with another first one. Mostly a disk placed since then touching
   // one of them on g's free side has covered the gap (in the paper's list, g's segment was cut),
@@ -266,7 +268,7 @@ class BoundaryFront {
     return kNone;
   }
   [[nodiscard]] bool fifo_empty() const noexcept { return head_ == fifo_.size() && wall_head_ == wall_fifo_.size(); }
-  [[nodiscard]] bool on_wall(std::int32_t e) const noexcept { return is_wall(e) || is_corner(e); }
+  [[nodiscard]] bool on_wall(std::int32_t e) const noexcept { return e < corner_count_; }  // a wall or a corner
   // Records gap g as the last one with its first disk first and its second disk second
   // (overtaker()).
   void link(Gap g) noexcept {
@@ -287,11 +289,11 @@ class BoundaryFront {
   }
   [[nodiscard]] static bool is_wall(std::int32_t e) noexcept { return e < 0; }
   [[nodiscard]] static std::size_t wall_index(std::int32_t e) noexcept { return static_cast<std::size_t>(-(e + 1)); }
-  [[nodiscard]] bool is_disk(std::int32_t e) const noexcept {
-    return e >= 0 && static_cast<std::size_t>(e) >= corners_.size();
-  }
+  // Against a copy of corners_.size() (the vector's size is a subtraction and a shift, and these
+  // tests ran 6.6 million times on a 67k-disk square: 7% of the front's instructions).
+  [[nodiscard]] bool is_disk(std::int32_t e) const noexcept { return e >= corner_count_; }
   [[nodiscard]] bool is_corner(std::int32_t e) const noexcept {
-    return e >= 0 && static_cast<std::size_t>(e) < corners_.size();
+    return static_cast<std::uint32_t>(e) < static_cast<std::uint32_t>(corner_count_);
   }
   [[nodiscard]] int class_of(double r) const noexcept { return classes_.of(r); }
   double draw() { return req_.radii->quantile(rng_.uniform()); }
@@ -363,6 +365,7 @@ class BoundaryFront {
         if (!convex) {
           vertex[i] = static_cast<std::int32_t>(corners_.size());
           corners_.push_back(Corner{wi.tx, wi.ty, wo.tx, wo.ty});
+          corner_count_ = static_cast<std::int32_t>(corners_.size());
           corner_at_.push_back(Point{wi.bx, wi.by});
         }
         if (sharp && wi.len < 2 * rmax_) {
@@ -400,6 +403,7 @@ class BoundaryFront {
 
   void setup_grid() {
     grid_ = CellGrid(0, 0, width_, height_, rmax_);
+    unclamped_ = clearance_ < rmax_;  // probe_col()
     head_cell_.assign(grid_.cells(), kNone);
 
     // The reflex vertices are nodes (elements a disk can touch) but stay out of the cells: as
@@ -542,11 +546,20 @@ class BoundaryFront {
 
   [[nodiscard]] std::int64_t col(double x) const noexcept { return grid_.col(x); }
   [[nodiscard]] std::int64_t row(double y) const noexcept { return grid_.row(y); }
-  [[nodiscard]] std::size_t cell_of(double x, double y) const noexcept { return grid_.cell_of(x, y); }
+  // col() and row() for a candidate that passed the box test (try_gap(), fits()): inside the
+  // polygon's box grown by the clearance, so that, with a clearance below rmax, everything within
+  // its reach (r + rmax and a clearance or two) lies in the grid's margin of 4 rmax, and its cells
+  // need no clamping (the same cells, in fewer instructions: the clamps were 6% of the front's).
+  [[nodiscard]] std::int64_t probe_col(double x) const noexcept {
+    return unclamped_ ? grid_.col_inside(x) : grid_.col(x);
+  }
+  [[nodiscard]] std::int64_t probe_row(double y) const noexcept {
+    return unclamped_ ? grid_.row_inside(y) : grid_.row(y);
+  }
 
   std::int32_t add_node(double x, double y, double r) {
     const auto id = static_cast<std::int32_t>(nodes_.size());
-    const std::size_t c = cell_of(x, y);
+    const auto c = static_cast<std::size_t>(probe_row(y)) * grid_.nx + static_cast<std::size_t>(probe_col(x));
     nodes_.push_back(Node{x, y, r, head_cell_[c], kNone});
     before_.push_back(kNone);
     head_cell_[c] = id;
@@ -741,8 +754,8 @@ class BoundaryFront {
   std::int32_t deepest(const Probe& p, const Gap* quick = nullptr) {
     std::int32_t best = kNone;
     double best_depth = 0;
-    const auto home_col = static_cast<std::size_t>(col(p.x));
-    const auto home_row = static_cast<std::size_t>(row(p.y));
+    const auto home_col = static_cast<std::size_t>(probe_col(p.x));
+    const auto home_row = static_cast<std::size_t>(probe_row(p.y));
     const std::size_t block = block_of(home_row, home_col);
     const double reach = p.r + margin_;
     std::uint32_t first_wall = 0;
@@ -781,15 +794,15 @@ class BoundaryFront {
       }
     }
     if (quick != nullptr && best == kNone) {
-      if (const std::int32_t e = in_the_way(quick->a, quick->b, p); e != kNone) {
+      if (const std::int32_t e = in_the_way(quick->a, quick->b, p, home_row * grid_.nx + home_col); e != kNone) {
         return e;
       }
     }
     const double r_reach = (p.r_hi + rmax_) * (1 + 1e-9);  // depth() can say yes up to r_hi + o.r
-    const std::int64_t c0 = col(p.x - r_reach);
-    const std::int64_t c1 = col(p.x + r_reach);
-    const std::int64_t r0 = row(p.y - r_reach);
-    const std::int64_t r1 = row(p.y + r_reach);
+    const std::int64_t c0 = probe_col(p.x - r_reach);
+    const std::int64_t c1 = probe_col(p.x + r_reach);
+    const std::int64_t r0 = probe_row(p.y - r_reach);
+    const std::int64_t r1 = probe_row(p.y + r_reach);
     visit_cells(head_cell_.data(), grid_.nx, nodes_.data(), kNone, c0, c1, r0, r1, [&](std::int32_t d, const Node& o) {
       const double dd = depth(p, o);
       // Of two disks in the way as deep, the older: exact ties are the rule in the band where
@@ -813,7 +826,7 @@ class BoundaryFront {
   // Whatever is found is in the way, so the try fails exactly when the scan would have made it
   // fail; but it is not always the deepest element, and the void the gap leaves is bounded by
   // the pocket this one leaves (a bound all the same), so packings differ from the scan's.
-  std::int32_t in_the_way(std::int32_t x, std::int32_t y, const Probe& p) {
+  std::int32_t in_the_way(std::int32_t x, std::int32_t y, const Probe& p, std::size_t home) {
     const std::int32_t before = is_disk(x) ? before_[static_cast<std::size_t>(x)] : kNone;
     if (is_disk(before) && depth(p, nodes_[static_cast<std::size_t>(before)]) > 0) {
       return before;
@@ -822,8 +835,7 @@ class BoundaryFront {
     if (is_disk(after) && depth(p, nodes_[static_cast<std::size_t>(after)]) > 0) {
       return after;
     }
-    for (std::int32_t e = head_cell_[cell_of(p.x, p.y)]; e != kNone;
-         e = nodes_[static_cast<std::size_t>(e)].cell_next) {
+    for (std::int32_t e = head_cell_[home]; e != kNone; e = nodes_[static_cast<std::size_t>(e)].cell_next) {
       if (depth(p, nodes_[static_cast<std::size_t>(e)]) > 0) {
         return e;
       }
@@ -1344,6 +1356,7 @@ class BoundaryFront {
   std::vector<Disk>& out_;
   FillStats& stats_;
   RunControl control_;
+  std::size_t out_before_;  // out_.size() until the run moves the nodes out (placed())
   Point origin_;
   double width_ = 0, height_ = 0;
   double rmin_ = 0, rmax_ = 0, clearance_ = 0, margin_ = 0, band_ = 0;
@@ -1356,7 +1369,8 @@ class BoundaryFront {
   bool hopeless_ = false;         // the failed gap takes no disk of the radius tried or smaller
 
   std::vector<Wall> walls_;
-  std::vector<Corner> corners_;  // node i < corners_.size() is reflex vertex i (radius 0)
+  std::vector<Corner> corners_;    // node i < corners_.size() is reflex vertex i (radius 0)
+  std::int32_t corner_count_ = 0;  // corners_.size()
   std::vector<Point> corner_at_;
   HugeVector<Node> nodes_;
   HugeVector<std::int32_t> before_;  // per disk: the first element of the last front gap with it second
@@ -1369,6 +1383,7 @@ class BoundaryFront {
   std::array<std::array<std::uint64_t, kMaskWords>, 2> mask_{};  // bit k of mask_[s]: voids_[s][k] not empty
 
   CellGrid grid_;
+  bool unclamped_ = false;  // probe_col()
   HugeVector<std::int32_t> head_cell_;
   std::vector<std::uint32_t> block_first_;  // per block of cells: its first entry in cell_walls_
   std::vector<std::uint32_t> cell_walls_;   // per cell of a walled block: its first wall in wall_ids_

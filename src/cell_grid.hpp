@@ -58,6 +58,18 @@ struct CellGrid {
   [[nodiscard]] std::size_t cell_of(double x, double y) const noexcept {
     return static_cast<std::size_t>(row(y)) * nx + static_cast<std::size_t>(col(x));
   }
+  // col() and row() for a coordinate known to lie in the grid (within its margin of 4 rmax around
+  // the box): the same cell, without the clamping.
+  [[nodiscard]] std::int64_t col_inside(double x) const noexcept {
+    const double g = (x - x0) * inv_side;
+    assert(g >= 0 && g < last_col_ + 1);
+    return static_cast<std::int64_t>(g);
+  }
+  [[nodiscard]] std::int64_t row_inside(double y) const noexcept {
+    const double g = (y - y0) * inv_side;
+    assert(g >= 0 && g < last_row_ + 1);
+    return static_cast<std::int64_t>(g);
+  }
 
  private:
   double last_col_ = 0, last_row_ = 0;  // nx - 1, ny - 1
