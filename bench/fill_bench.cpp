@@ -5,6 +5,7 @@
 //   build/release/bench/frontpack_bench_fill --benchmark_filter=Pipeline/10/1/   (open, ~10M disks)
 //   build/release/bench/frontpack_bench_fill --benchmark_filter=Pipeline/10/2/   (boundary)
 //   build/release/bench/frontpack_bench_fill --benchmark_filter=Pipeline/100/   (100M disks, 5.4 GB)
+//   build/release/bench/frontpack_bench_fill --benchmark_filter=CostRatio/      (issue #5's cost ratio)
 // "Core" times the advancing front alone (FillStats::seconds_front, manual time); "Pipeline"
 // times fill() end to end: generation + exact cull + CGAL overlap pass. The last argument is
 // FillOptions::fill_voids: issue #3's figures are the paper's forms (0); issue #5's compare the
