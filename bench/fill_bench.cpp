@@ -149,14 +149,23 @@ constexpr const char* kShapes[] = {"annulus",    "big_polygon",    "comb",      
                                    "gear",       "hole_touching",  "islands",    "l_shape",
                                    "millimetre", "narrow_channel", "offset_1e6", "plate_with_holes"};
 
+fp::Domain shape(std::int64_t index) {
+  return fp::Domain::from_wkt_file(std::string(FRONTPACK_SHAPES_DIR) + "/" + kShapes[index] + ".wkt");
+}
+
+// Uniform radii in [R, 10 R] for about a million disks in d: E[r^2] = 37 R^2; about 0.8 of the
+// area covered.
+fp::Radii shape_radii(const fp::Domain& d) {
+  const double r = std::sqrt(0.8 * d.area() / (1e6 * std::numbers::pi * 37.0));
+  return fp::Radii::uniform(r, 10 * r);
+}
+
 void BM_Shape(benchmark::State& state) {
   const std::string name = kShapes[state.range(0)];
-  const fp::Domain d = fp::Domain::from_wkt_file(std::string(FRONTPACK_SHAPES_DIR) + "/" + name + ".wkt");
+  const fp::Domain d = shape(state.range(0));
   const auto method = static_cast<fp::Method>(state.range(1));
-  // Uniform radii in [R, 10 R]: E[r^2] = 37 R^2; about 0.8 of the area covered.
-  const double r = std::sqrt(0.8 * d.area() / (1e6 * std::numbers::pi * 37.0));
   fp::FillOptions o = options(method, state.range(2) != 0);
-  o.radii = fp::Radii::uniform(r, 10 * r);
+  o.radii = shape_radii(d);
   fp::Packing p;
   for (auto _ : state) {
     p = fp::fill(d, o);
@@ -197,11 +206,10 @@ BENCHMARK(BM_Shape)
 void BM_CostRatio(benchmark::State& state) {
   constexpr int kPairs = 5;
   const std::string name = kShapes[state.range(0)];
-  const fp::Domain d = fp::Domain::from_wkt_file(std::string(FRONTPACK_SHAPES_DIR) + "/" + name + ".wkt");
-  const double r = std::sqrt(0.8 * d.area() / (1e6 * std::numbers::pi * 37.0));  // as BM_Shape
+  const fp::Domain d = shape(state.range(0));
   fp::FillOptions open = options(fp::Method::open, false);
   fp::FillOptions boundary = options(fp::Method::boundary, true);
-  open.radii = boundary.radii = fp::Radii::uniform(r, 10 * r);
+  open.radii = boundary.radii = shape_radii(d);
   auto per_kept_disk = [&](const fp::FillOptions& o, double& seconds) {
     const fp::Packing p = fp::fill(d, o);
     seconds += p.stats.seconds_front;
