@@ -69,6 +69,7 @@
 #include <limits>
 #include <numbers>
 #include <tuple>
+#include <type_traits>
 #include <utility>
 
 #include "cell_grid.hpp"
@@ -106,6 +107,43 @@ constexpr std::size_t kLeafWalls = 4;    // walls per leaf of the wall tree
 // front does not start there, and the wall layer slides across it (slide()). Used through its
 // cosine only, correctly rounded here (no C library call).
 constexpr double kCosSlideTurn = 0.9393727128473789;  // cos(0.35)
+
+// Lanes. pocket() computes one pocket in a double; a disk placed in a void needs two, which
+// pocket_pair() computes in the two lanes of a vector (GCC's and Clang's vector extensions, whose
+// + - * / and square root are the correctly rounded scalar operations lane by lane) from the same
+// source, so with the same bits. Helpers that take either:
+using V2 = double __attribute__((vector_size(16)));
+using M2 = std::int64_t __attribute__((vector_size(16)));  // a comparison of V2s: -1 true, 0 false
+template <class T>
+T lanes(double a) noexcept {
+  if constexpr (std::is_same_v<T, double>) {
+    return a;
+  } else {
+    return T{a, a};
+  }
+}
+inline double select(bool m, double a, double b) noexcept {
+  return m ? a : b;
+}
+inline V2 select(M2 m, V2 a, V2 b) noexcept {
+  return std::bit_cast<V2>((std::bit_cast<M2>(a) & m) | (std::bit_cast<M2>(b) & ~m));
+}
+inline bool lnot(bool m) noexcept {
+  return !m;
+}
+inline M2 lnot(M2 m) noexcept {
+  return ~m;
+}
+inline double square_root(double a) noexcept {
+  return std::sqrt(a);
+}
+inline V2 square_root(V2 a) noexcept {
+#if defined(__SSE2__)
+  return __builtin_ia32_sqrtpd(a);
+#else
+  return V2{std::sqrt(a[0]), std::sqrt(a[1])};
+#endif
+}
 
 class BoundaryFront {
   struct Node {
@@ -888,34 +926,76 @@ class BoundaryFront {
     const Node& na = nodes_[static_cast<std::size_t>(a)];
     const Node& nb = nodes_[static_cast<std::size_t>(b)];
     const Node& nd = nodes_[static_cast<std::size_t>(d)];
+    return pocket_of_nodes<double>(na.x, na.y, na.r, nb.x, nb.y, nb.r, nd.x, nd.y, nd.r);
+  }
+
+  // pocket(x, n, d) and pocket(n, y, d) for disks x, n, y and a node d that is no wall: the two
+  // pockets a disk n placed in void (x, y) bounded by d leaves. In the lanes of a vector, in half
+  // the instructions of two calls and with their two long chains of dependent operations as one;
+  // the same bits (a lane that the vector leaves undecided, NaN, is computed alone).
+  [[nodiscard]] std::array<double, 2> pocket_pair(std::int32_t x, std::int32_t n, std::int32_t y,
+                                                  std::int32_t d) const noexcept {
+    const Node& a = nodes_[static_cast<std::size_t>(x)];
+    const Node& m = nodes_[static_cast<std::size_t>(n)];
+    const Node& b = nodes_[static_cast<std::size_t>(y)];
+    const Node& o = nodes_[static_cast<std::size_t>(d)];
+    const V2 rho = pocket_of_nodes<V2>(V2{a.x, m.x}, V2{a.y, m.y}, V2{a.r, m.r}, V2{m.x, b.x}, V2{m.y, b.y},
+                                       V2{m.r, b.r}, lanes<V2>(o.x), lanes<V2>(o.y), lanes<V2>(o.r));
+    std::array<double, 2> caps{rho[0], rho[1]};
+    if (x == d) {
+      caps[0] = -1;
+    } else if (std::isnan(caps[0])) [[unlikely]] {
+      caps[0] = pocket(x, n, d);
+    }
+    if (y == d) {
+      caps[1] = -1;
+    } else if (std::isnan(caps[1])) [[unlikely]] {
+      caps[1] = pocket(n, y, d);
+    }
+    return caps;
+  }
+
+  // pocket() of three nodes (disks or reflex vertices) a, b, d, given by their centres and radii:
+  // in a double (T = double), or two triples in the lanes of a V2. A lane whose system is
+  // degenerate is -1 in a double and NaN in a V2, and one whose quadratic is linear (a lane
+  // cannot branch) is NaN in a V2 too: both are rare, and pocket_pair() computes them alone.
+  template <class T>
+  [[nodiscard]] T pocket_of_nodes(T ax, T ay, T ra, T bx, T by, T rb, T dx, T dy, T rd) const noexcept {
     // Relative to a's centre: |p|^2 = (ra + rho)^2 and, subtracting, c_i . p = alpha_i + beta_i rho.
     // At the scale of rmax (scale_): the degeneracy test below compares fourth powers of lengths.
     const double k = scale_.k;
-    const double bx = (nb.x - na.x) * k;
-    const double by = (nb.y - na.y) * k;
-    const double dx = (nd.x - na.x) * k;
-    const double dy = (nd.y - na.y) * k;
-    const double ra = na.r * k;
-    const double rb = nb.r * k;
-    const double rd = nd.r * k;
-    const double alpha_b = (bx * bx + by * by - rb * rb + ra * ra) / 2;
-    const double alpha_d = (dx * dx + dy * dy - rd * rd + ra * ra) / 2;
-    const double beta_b = ra - rb;
-    const double beta_d = ra - rd;
-    const double det = bx * dy - by * dx;
-    const double scale = (bx * bx + by * by) * (dx * dx + dy * dy);
-    if (!(det * det > 1e-12 * scale)) {
-      return -1;
+    bx = (bx - ax) * k;
+    by = (by - ay) * k;
+    dx = (dx - ax) * k;
+    dy = (dy - ay) * k;
+    ra = ra * k;
+    rb = rb * k;
+    rd = rd * k;
+    const T alpha_b = (bx * bx + by * by - rb * rb + ra * ra) / 2.0;
+    const T alpha_d = (dx * dx + dy * dy - rd * rd + ra * ra) / 2.0;
+    const T beta_b = ra - rb;
+    const T beta_d = ra - rd;
+    const T det = bx * dy - by * dx;
+    const T scale = (bx * bx + by * by) * (dx * dx + dy * dy);
+    const auto regular = det * det > 1e-12 * scale;
+    if constexpr (std::is_same_v<T, double>) {
+      if (!regular) {
+        return -1;
+      }
     }
-    const double inv = 1 / det;
-    const double ux = (alpha_b * dy - alpha_d * by) * inv;
-    const double uy = (bx * alpha_d - dx * alpha_b) * inv;
-    const double vx = (beta_b * dy - beta_d * by) * inv;
-    const double vy = (bx * beta_d - dx * beta_b) * inv;
+    const T inv = 1.0 / det;
+    const T ux = (alpha_b * dy - alpha_d * by) * inv;
+    const T uy = (bx * alpha_d - dx * alpha_b) * inv;
+    const T vx = (beta_b * dy - beta_d * by) * inv;
+    const T vy = (bx * beta_d - dx * beta_b) * inv;
     // On the left of a -> b: the pocket, not the circle on the far side.
-    const double rho =
-        smallest_root(ux, uy, vx, vy, ra, [&](double t) { return bx * (uy + t * vy) - by * (ux + t * vx) > 0; });
-    return rho < 0 ? rho : rho * scale_.inv_k;
+    const T rho = smallest_root(ux, uy, vx, vy, ra, [&](T t) { return bx * (uy + t * vy) - by * (ux + t * vx) > 0.0; });
+    const T scaled = select(rho < 0.0, rho, rho * scale_.inv_k);
+    if constexpr (std::is_same_v<T, double>) {
+      return scaled;
+    } else {
+      return select(regular, scaled, lanes<T>(std::numeric_limits<double>::quiet_NaN()));
+    }
   }
 
   // pocket() with one wall among the three: the circle of radius rho at distance rho from the
@@ -1034,28 +1114,36 @@ class BoundaryFront {
     return rho;
   }
 
-  // The smallest rho > 0 with |u + rho v| = ri + rho that `accept` takes, or -1.
-  template <class Accept>
-  static double smallest_root(double ux, double uy, double vx, double vy, double ri, Accept accept) noexcept {
-    const double qa = vx * vx + vy * vy - 1;
-    const double qb = 2 * (ux * vx + uy * vy - ri);
-    const double qc = ux * ux + uy * uy - ri * ri;
+  // The smallest rho > 0 with |u + rho v| = ri + rho that `accept` takes, or -1; lane by lane in
+  // a V2 (pocket_of_nodes()), where a lane whose quadratic is linear is NaN.
+  template <class T, class Accept>
+  static T smallest_root(T ux, T uy, T vx, T vy, T ri, Accept accept) noexcept {
+    const T qa = vx * vx + vy * vy - 1.0;
+    const T qb = 2.0 * (ux * vx + uy * vy - ri);
+    const T qc = ux * ux + uy * uy - ri * ri;
     constexpr double inf = std::numeric_limits<double>::infinity();
     // Whether rho is a root to take (positive, finite, accepted), without branches.
-    auto ok = [&](double rho) { return (rho > 0) & (rho < inf) & accept(rho); };
-    if (qa == 0) {
-      const double rho = -qc / qb;
-      return ok(rho) ? rho : -1;
+    auto ok = [&](T rho) { return (rho > 0.0) & (rho < inf) & accept(rho); };
+    if constexpr (std::is_same_v<T, double>) {
+      if (qa == 0) {
+        const double rho = -qc / qb;
+        return ok(rho) ? rho : -1;
+      }
     }
     // A negative discriminant (no root) gives NaN roots, which ok() refuses.
-    const double sq = std::sqrt(qb * qb - 4 * qa * qc);
-    const double half = 0.5 / qa;
-    const double hi = (-qb + sq) * half;
-    const double lo = (-qb - sq) * half;
-    const bool ok_hi = ok(hi);
-    const bool ok_lo = ok(lo);
-    const double best = ok_hi ? hi : -1;
-    return ok_lo & (!ok_hi | (lo < hi)) ? lo : best;
+    const T sq = square_root(qb * qb - 4.0 * qa * qc);
+    const T half = 0.5 / qa;
+    const T hi = (-qb + sq) * half;
+    const T lo = (-qb - sq) * half;
+    const auto ok_hi = ok(hi);
+    const auto ok_lo = ok(lo);
+    const T best = select(ok_hi, hi, lanes<T>(-1));
+    const T root = select(ok_lo & (lnot(ok_hi) | (lo < hi)), lo, best);
+    if constexpr (std::is_same_v<T, double>) {
+      return root;
+    } else {
+      return select(qa == 0.0, lanes<T>(std::numeric_limits<double>::quiet_NaN()), root);
+    }
   }
 
   // Keeps gap g as a void for radii below class k, and below the pocket left by `blocker`.
@@ -1277,11 +1365,11 @@ class BoundaryFront {
           // a layer later, when their neighbourhood had left the cache, and 10% took a disk.)
           // Not after a move: the new parent can be a wall cut in, and pocket_at_wall() does
           // not tell its sides apart.
-          // Both pockets first: their computations, a long chain of dependent operations
-          // each, then overlap.
+          // Both pockets first, in one computation (pocket_pair()).
           const std::array<Gap, 2> split{Gap{x, n}, Gap{n, y}};
-          const std::array<double, 2> caps{x == g.bound ? -1 : pocket(x, n, g.bound),
-                                           y == g.bound ? -1 : pocket(n, y, g.bound)};
+          const std::array<double, 2> caps = is_wall(g.bound)
+                                                 ? std::array<double, 2>{pocket(x, n, g.bound), pocket(n, y, g.bound)}
+                                                 : pocket_pair(x, n, y, g.bound);
           for (std::size_t i = 0; i < 2; ++i) {
             if (caps[i] >= 0 && caps[i] < rmax_) {
               link(split[i]);
