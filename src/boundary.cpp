@@ -184,6 +184,7 @@ class BoundaryFront {
     scale_ = LengthScale(rmax_);
     margin_ = clearance_ / 2;
     band_ = clearance_ / 4;
+    box_ = Box{-clearance_, -clearance_, width_ + clearance_, height_ + clearance_};
     classes_ = RadiusClasses<kClasses>(rmin_, rmax_);
 
     const double estimate = estimate_disks(box, *req.radii);
@@ -209,7 +210,7 @@ class BoundaryFront {
       Gap g{kNone, kNone};
       // Voids first, those on a rough wall before the others, the tightest class whose radii all
       // exceed r, the most recent void in it.
-      int k = first_void_above(1, cls);
+      int k = any_rough_ ? first_void_above(1, cls) : -1;
       std::size_t side = 1;
       if (k < 0) {
         k = first_void_above(0, cls);
@@ -430,6 +431,7 @@ class BoundaryFront {
     for (const Ring& hole : req_.polygon->holes) {
       add_ring(hole);
     }
+    any_rough_ = std::find(rough_.begin(), rough_.end(), 1) != rough_.end();
   }
 
   [[nodiscard]] Point local(Point p) const noexcept { return {p.x - origin_.x, p.y - origin_.y}; }
@@ -1335,8 +1337,7 @@ class BoundaryFront {
     int moves = walled ? (in_void ? kVoidMoves : kWallMoves) : kMoves;
     for (int move = 0; move <= moves; ++move) {
       slide(x, y, r, px, py);
-      if (!(px - r >= -clearance_ && px + r <= width_ + clearance_ && py - r >= -clearance_ &&
-            py + r <= height_ + clearance_)) {
+      if (!(px - r >= box_.xmin && px + r <= box_.xmax && py - r >= box_.ymin && py + r <= box_.ymax)) {
         return false;  // outside the polygon's box, so outside the polygon
       }
       const Probe p = probe(px, py, r);
@@ -1452,6 +1453,7 @@ class BoundaryFront {
   double rmin_ = 0, rmax_ = 0, clearance_ = 0, margin_ = 0, band_ = 0;
   LengthScale scale_;  // for tangent_to_two
   RadiusClasses<kClasses> classes_;
+  Box box_;  // the polygon's box (local coordinates) grown by the clearance
   double area_ = 0;
   double polygon_area_ = 0;  // shoelace, for the seeding rule
   int seeds_ = 0;
@@ -1482,6 +1484,7 @@ class BoundaryFront {
   std::vector<Bounds> tree_;             // the wall tree (build_wall_tree)
   std::vector<std::size_t> ring_first_;  // the first wall of each ring
   std::vector<std::uint8_t> rough_;
+  bool any_rough_ = false;  // a rough wall exists (else no void is kept on side 1)
   std::size_t leaves_ = 1;
 };
 
