@@ -460,87 +460,93 @@ class BoundaryFront {
       before_.push_back(kNone);
     }
 
-    // Walls per cell (compressed rows): those meeting the cell grown by rmax + the clearance.
+    // Walls per cell: those meeting the cell grown by rmax + the clearance, kept for the cells of
+    // walled blocks only (below). Found as (cell, wall) pairs, row by row along each wall: in a
+    // row, only the columns that the wall's stretch in the row's band can reach are tested, so
+    // that the work follows the walls' length and not the area of their boxes (a diagonal wall's
+    // box is a quarter of the grid: testing every cell of it took 49 ms, 14% of the front, on a
+    // 1M-disk diamond), and nothing is kept per cell of the grid.
     const double reach = (rmax_ + clearance_) * (1 + 1e-9) + 4 * clearance_;
-    // Per cell, while the lists are built: where its list begins, and where the next wall goes.
-    std::vector<std::uint32_t> wall_begin(grid_.cells() + 1, 0);
-    std::vector<std::uint32_t> fill_at;
-    for (int pass = 0; pass < 2; ++pass) {
-      for (std::size_t e = 0; e < walls_.size(); ++e) {
-        const Wall& wl = walls_[e];
-        const std::int64_t c0 = col(std::min(wl.ax, wl.bx) - reach);
-        const std::int64_t c1 = col(std::max(wl.ax, wl.bx) + reach);
-        const std::int64_t r0 = row(std::min(wl.ay, wl.by) - reach);
-        const std::int64_t r1 = row(std::max(wl.ay, wl.by) + reach);
-        for (std::int64_t j = r0; j <= r1; ++j) {
-          for (std::int64_t i = c0; i <= c1; ++i) {
-            const double x0 = grid_.x0 + static_cast<double>(i) * grid_.side - reach;
-            const double y0 = grid_.y0 + static_cast<double>(j) * grid_.side - reach;
-            if (!segment_meets_box(wl, x0, y0, x0 + grid_.side + 2 * reach, y0 + grid_.side + 2 * reach)) {
-              continue;
-            }
-            const std::size_t c = static_cast<std::size_t>(j) * grid_.nx + static_cast<std::size_t>(i);
-            if (pass == 0) {
-              ++wall_begin[c + 1];
-            } else {
-              wall_ids_[fill_at[c]++] = -(static_cast<std::int32_t>(e) + 1);
-            }
+    struct Pair {
+      std::uint64_t key;  // the cell's block, then its place in the block (the lists' order)
+      std::uint32_t wall;
+    };
+    std::vector<Pair> pairs;
+    blocks_x_ = (grid_.nx + kBlock - 1) / kBlock;  // for block_of()
+    for (std::size_t e = 0; e < walls_.size(); ++e) {
+      const Wall& wl = walls_[e];
+      const double dx = wl.bx - wl.ax;
+      const double dy = wl.by - wl.ay;
+      const std::int64_t c0 = col(std::min(wl.ax, wl.bx) - reach);
+      const std::int64_t c1 = col(std::max(wl.ax, wl.bx) + reach);
+      const std::int64_t r0 = row(std::min(wl.ay, wl.by) - reach);
+      const std::int64_t r1 = row(std::max(wl.ay, wl.by) + reach);
+      for (std::int64_t j = r0; j <= r1; ++j) {
+        const double y0 = grid_.y0 + static_cast<double>(j) * grid_.side - reach;
+        // The wall's x-extent in the row's band, grown by a cell on each side (far more than
+        // rounding needs: the exact test below decides every cell; this only skips those that
+        // cannot pass it).
+        double t0 = 0;
+        double t1 = 1;
+        if (dy != 0) {
+          const double ta = (y0 - grid_.side - wl.ay) / dy;
+          const double tb = (y0 + 2 * grid_.side + 2 * reach - wl.ay) / dy;
+          t0 = std::max(t0, std::min(ta, tb));
+          t1 = std::min(t1, std::max(ta, tb));
+          if (!(t0 <= t1)) {
+            continue;
           }
         }
-      }
-      if (pass == 0) {
-        for (std::size_t c = 0; c < grid_.cells(); ++c) {
-          wall_begin[c + 1] += wall_begin[c];
+        const double xa = wl.ax + t0 * dx;
+        const double xb = wl.ax + t1 * dx;
+        const std::int64_t i0 = std::max(c0, col(std::min(xa, xb) - reach) - 1);
+        const std::int64_t i1 = std::min(c1, col(std::max(xa, xb) + reach) + 1);
+        for (std::int64_t i = i0; i <= i1; ++i) {
+          const double x0 = grid_.x0 + static_cast<double>(i) * grid_.side - reach;
+          if (!segment_meets_box(wl, x0, y0, x0 + grid_.side + 2 * reach, y0 + grid_.side + 2 * reach)) {
+            continue;
+          }
+          const auto ui = static_cast<std::size_t>(i);
+          const auto uj = static_cast<std::size_t>(j);
+          const std::size_t place = uj % kBlock * kBlock + ui % kBlock;
+          pairs.push_back(Pair{block_of(uj, ui) * kBlock * kBlock + place, static_cast<std::uint32_t>(e)});
         }
-        wall_ids_.assign(wall_begin.back(), 0);
-        fill_at.assign(wall_begin.begin(), wall_begin.end() - 1);
       }
     }
-    release(fill_at);
+    // A cell's walls in the order of the walls (the rows are walked wall after wall).
+    std::sort(pairs.begin(), pairs.end(),
+              [](const Pair& a, const Pair& b) { return a.key != b.key ? a.key < b.key : a.wall < b.wall; });
     // A bit per block of kBlock x kBlock cells: whether any of them has walls. Most probes lie in
     // blocks without, and the bits of a whole front fit in the first-level cache, unlike the
     // cells' lists (a tenth of the front's cache misses were reading them).
-    blocks_x_ = (grid_.nx + kBlock - 1) / kBlock;
     const std::size_t blocks = blocks_x_ * ((grid_.ny + kBlock - 1) / kBlock);
     walled_.assign((blocks + 63) / 64, 0);
-    for (std::size_t c = 0; c < grid_.cells(); ++c) {
-      if (wall_begin[c + 1] > wall_begin[c]) {
-        const std::size_t b = block_of(c / grid_.nx, c % grid_.nx);
-        walled_[b / 64] |= std::uint64_t{1} << (b % 64);
-      }
+    for (const Pair& q : pairs) {
+      const std::size_t b = q.key / (kBlock * kBlock);
+      walled_[b / 64] |= std::uint64_t{1} << (b % 64);
     }
-    // The lists kept for the cells of walled blocks only, block by block: a block's cells' lists
-    // one after the other in wall_ids_, and kBlock^2 + 1 entries in cell_walls_ from
-    // block_first_[b], so that a cell's list runs from its entry to the next. Begins for every
-    // cell of the grid were 4 bytes per cell, 4 per disk at cells of rmax, most of them for
-    // cells no wall comes near; the lists, and their order, are the same.
+    // The lists of the walled blocks' cells, block by block: a block's cells' lists one after the
+    // other in wall_ids_, and kBlock^2 + 1 entries in cell_walls_ from block_first_[b], so that a
+    // cell's list runs from its entry to the next. (Begins for every cell of the grid were 4 bytes
+    // per cell, 4 per disk at cells of rmax, most of them for cells no wall comes near.)
     block_first_.assign(blocks, 0);
     std::size_t walled_blocks = 0;
     for (const std::uint64_t bits : walled_) {
       walled_blocks += static_cast<std::size_t>(std::popcount(bits));
     }
     cell_walls_.reserve(walled_blocks * (kBlock * kBlock + 1));
-    std::vector<std::int32_t> ids;
-    ids.reserve(wall_ids_.size());
-    for (std::size_t b = 0; b < blocks; ++b) {
-      if ((walled_[b / 64] >> (b % 64) & 1) == 0) {
-        continue;
-      }
+    wall_ids_.reserve(pairs.size());
+    for (std::size_t k = 0; k < pairs.size();) {
+      const std::size_t b = pairs[k].key / (kBlock * kBlock);
       block_first_[b] = static_cast<std::uint32_t>(cell_walls_.size());
-      const std::size_t bx = b % blocks_x_ * kBlock;
-      const std::size_t by = b / blocks_x_ * kBlock;
       for (std::size_t l = 0; l < kBlock * kBlock; ++l) {
-        cell_walls_.push_back(static_cast<std::uint32_t>(ids.size()));
-        const std::size_t i = bx + l % kBlock;
-        const std::size_t j = by + l / kBlock;
-        if (i < grid_.nx && j < grid_.ny) {
-          const std::size_t c = j * grid_.nx + i;
-          ids.insert(ids.end(), wall_ids_.begin() + wall_begin[c], wall_ids_.begin() + wall_begin[c + 1]);
+        cell_walls_.push_back(static_cast<std::uint32_t>(wall_ids_.size()));
+        for (; k < pairs.size() && pairs[k].key == b * kBlock * kBlock + l; ++k) {
+          wall_ids_.push_back(-(static_cast<std::int32_t>(pairs[k].wall) + 1));
         }
       }
-      cell_walls_.push_back(static_cast<std::uint32_t>(ids.size()));
+      cell_walls_.push_back(static_cast<std::uint32_t>(wall_ids_.size()));
     }
-    wall_ids_.swap(ids);
   }
 
   // The range of cell (row, col)'s walls in wall_ids_; only for a cell in a walled block.
