@@ -514,58 +514,62 @@ class BoundaryFront {
         }
       }
     }
-    // In the lists' order: by block (a counting sort, stable, so each block's pairs stay in the
-    // order of the walls), then by cell within each block (a block's pairs are few). A cell's
-    // walls come in the order of the walls, as they were when every cell was tested in turn.
-    {
-      const std::size_t blocks = blocks_x_ * ((grid_.ny + kBlock - 1) / kBlock);
-      std::vector<std::size_t> start(blocks + 1, 0);
-      for (const Pair& q : pairs) {
-        ++start[q.key / (kBlock * kBlock) + 1];
-      }
-      std::partial_sum(start.begin(), start.end(), start.begin());
-      std::vector<Pair> sorted(pairs.size());
-      std::vector<std::size_t> at(start.begin(), start.end() - 1);
-      for (const Pair& q : pairs) {
-        sorted[at[q.key / (kBlock * kBlock)]++] = q;
-      }
-      for (std::size_t b = 0; b < blocks; ++b) {
-        std::sort(sorted.begin() + static_cast<std::ptrdiff_t>(start[b]),
-                  sorted.begin() + static_cast<std::ptrdiff_t>(start[b + 1]),
-                  [](const Pair& x, const Pair& y) { return x.key != y.key ? x.key < y.key : x.wall < y.wall; });
-      }
-      pairs.swap(sorted);
-    }
     // A bit per block of kBlock x kBlock cells: whether any of them has walls. Most probes lie in
     // blocks without, and the bits of a whole front fit in the first-level cache, unlike the
     // cells' lists (a tenth of the front's cache misses were reading them).
+    constexpr std::size_t kCells = kBlock * kBlock;  // cells per block
     const std::size_t blocks = blocks_x_ * ((grid_.ny + kBlock - 1) / kBlock);
     walled_.assign((blocks + 63) / 64, 0);
+    // The pairs grouped by block (a counting sort: stable, so each block's pairs stay in the order
+    // of the walls).
+    std::vector<std::size_t> start(blocks + 1, 0);
     for (const Pair& q : pairs) {
-      const std::size_t b = q.key / (kBlock * kBlock);
+      const std::size_t b = q.key / kCells;
+      ++start[b + 1];
       walled_[b / 64] |= std::uint64_t{1} << (b % 64);
     }
+    std::partial_sum(start.begin(), start.end(), start.begin());
+    std::vector<Pair> grouped(pairs.size());
+    {
+      std::vector<std::size_t> at(start.begin(), start.end() - 1);
+      for (const Pair& q : pairs) {
+        grouped[at[q.key / kCells]++] = q;
+      }
+    }
+    release(pairs);
     // The lists of the walled blocks' cells, block by block: a block's cells' lists one after the
-    // other in wall_ids_, and kBlock^2 + 1 entries in cell_walls_ from block_first_[b], so that a
-    // cell's list runs from its entry to the next. (Begins for every cell of the grid were 4 bytes
-    // per cell, 4 per disk at cells of rmax, most of them for cells no wall comes near.)
+    // other in wall_ids_, and kCells + 1 entries in cell_walls_ from block_first_[b], so that a
+    // cell's list runs from its entry to the next. Each block's pairs are put in place by cell
+    // with a second counting sort, which keeps a cell's walls in the order of the walls (as when
+    // every cell was tested in turn). (Begins for every cell of the grid were 4 bytes per cell, 4
+    // per disk at cells of rmax, most of them for cells no wall comes near.)
     block_first_.assign(blocks, 0);
     std::size_t walled_blocks = 0;
     for (const std::uint64_t bits : walled_) {
       walled_blocks += static_cast<std::size_t>(std::popcount(bits));
     }
-    cell_walls_.reserve(walled_blocks * (kBlock * kBlock + 1));
-    wall_ids_.reserve(pairs.size());
-    for (std::size_t k = 0; k < pairs.size();) {
-      const std::size_t b = pairs[k].key / (kBlock * kBlock);
-      block_first_[b] = static_cast<std::uint32_t>(cell_walls_.size());
-      for (std::size_t l = 0; l < kBlock * kBlock; ++l) {
-        cell_walls_.push_back(static_cast<std::uint32_t>(wall_ids_.size()));
-        for (; k < pairs.size() && pairs[k].key == b * kBlock * kBlock + l; ++k) {
-          wall_ids_.push_back(-(static_cast<std::int32_t>(pairs[k].wall) + 1));
-        }
+    cell_walls_.reserve(walled_blocks * (kCells + 1));
+    wall_ids_.resize(grouped.size());
+    std::array<std::uint32_t, kCells + 1> at{};
+    for (std::size_t b = 0; b < blocks; ++b) {
+      if (start[b] == start[b + 1]) {
+        continue;
       }
-      cell_walls_.push_back(static_cast<std::uint32_t>(wall_ids_.size()));
+      block_first_[b] = static_cast<std::uint32_t>(cell_walls_.size());
+      at.fill(0);
+      for (std::size_t k = start[b]; k < start[b + 1]; ++k) {
+        ++at[grouped[k].key % kCells + 1];
+      }
+      for (std::size_t l = 0; l < kCells; ++l) {
+        at[l + 1] += at[l];
+      }
+      const auto base = static_cast<std::uint32_t>(start[b]);
+      for (const std::uint32_t first : at) {
+        cell_walls_.push_back(base + first);
+      }
+      for (std::size_t k = start[b]; k < start[b + 1]; ++k) {
+        wall_ids_[base + at[grouped[k].key % kCells]++] = -(static_cast<std::int32_t>(grouped[k].wall) + 1);
+      }
     }
   }
 
