@@ -962,9 +962,10 @@ class BoundaryFront {
   }
 
   // pocket(x, n, d) and pocket(n, y, d) for disks x, n, y and a node d that is no wall: the two
-  // pockets a disk n placed in void (x, y) bounded by d leaves. In the lanes of a vector, in half
-  // the instructions of two calls and with their two long chains of dependent operations as one;
-  // the same bits (a lane that the vector leaves undecided, NaN, is computed alone).
+  // pockets a disk n placed in void (x, y) bounded by d leaves. In the lanes of a vector, in two
+  // thirds of the instructions of two calls and with their two long chains of dependent
+  // operations as one; the same bits (a lane that the vector leaves undecided, NaN, is computed
+  // alone).
   [[nodiscard]] std::array<double, 2> pocket_pair(std::int32_t x, std::int32_t n, std::int32_t y,
                                                   std::int32_t d) const noexcept {
     const Node& a = nodes_[static_cast<std::size_t>(x)];
