@@ -69,6 +69,7 @@
 #include <limits>
 #include <numbers>
 #include <numeric>
+#include <string>
 #include <tuple>
 #include <type_traits>
 #include <utility>
@@ -114,7 +115,7 @@ constexpr double kCosSlideTurn = 0.9393727128473789;  // cos(0.35)
 // + - * / and square root are the correctly rounded scalar operations lane by lane) from the same
 // source, so with the same bits. Helpers that take either:
 using V2 = double __attribute__((vector_size(16)));
-using M2 = std::int64_t __attribute__((vector_size(16)));  // a comparison of V2s: -1 true, 0 false
+using M2 = decltype(V2{} < V2{});  // a comparison of V2s: -1 true, 0 false (Clang and GCC name it differently)
 template <class T>
 T lanes(double a) noexcept {
   if constexpr (std::is_same_v<T, double>) {
@@ -188,8 +189,8 @@ class BoundaryFront {
     box_ = Box{-clearance_, -clearance_, width_ + clearance_, height_ + clearance_};
     classes_ = RadiusClasses<kClasses>(rmin_, rmax_);
 
-    const double estimate = estimate_disks(box, *req.radii);
-    const auto reserve = static_cast<std::size_t>(std::min(estimate * 1.3 + 64, 1e9));
+    estimate_ = estimate_disks(box, *req.radii);
+    const auto reserve = static_cast<std::size_t>(std::min(estimate_ * 1.3 + 64, 1e9));
     nodes_.reserve(reserve);
     before_.reserve(reserve);
     setup_walls();
@@ -469,7 +470,10 @@ class BoundaryFront {
     // 1M-disk diamond), and nothing is kept per cell of the grid.
     const double reach = (rmax_ + clearance_) * (1 + 1e-9) + 4 * clearance_;
     struct Pair {
-      std::uint64_t key;  // the cell's block, then its place in the block (the lists' order)
+      // The cell's block, then its place in the block (the lists' order): below
+      // (nx + kBlock - 1) (ny + kBlock - 1), which CellGrid's cap of about 16M cells keeps far
+      // below 2^32.
+      std::uint32_t key;
       std::uint32_t wall;
     };
     std::vector<Pair> pairs;
@@ -510,7 +514,8 @@ class BoundaryFront {
           const auto ui = static_cast<std::size_t>(i);
           const auto uj = static_cast<std::size_t>(j);
           const std::size_t place = uj % kBlock * kBlock + ui % kBlock;
-          pairs.push_back(Pair{block_of(uj, ui) * kBlock * kBlock + place, static_cast<std::uint32_t>(e)});
+          pairs.push_back(Pair{static_cast<std::uint32_t>(block_of(uj, ui) * kBlock * kBlock + place),
+                               static_cast<std::uint32_t>(e)});
         }
       }
     }
@@ -529,6 +534,12 @@ class BoundaryFront {
       walled_[b / 64] |= std::uint64_t{1} << (b % 64);
     }
     std::partial_sum(start.begin(), start.end(), start.begin());
+    if (pairs.size() > std::numeric_limits<std::uint32_t>::max()) {  // the lists index them in 32 bits
+      throw LimitError("the domain's edges come within reach of " + std::to_string(pairs.size()) +
+                           " cells of the packing's grid, counted with multiplicity, more than 2^32; use larger "
+                           "radii or a domain with fewer edges",
+                       static_cast<std::size_t>(std::min(estimate_, 1e18)));
+    }
     std::vector<Pair> grouped(pairs.size());
     {
       std::vector<std::size_t> at(start.begin(), start.end() - 1);
@@ -1484,7 +1495,8 @@ class BoundaryFront {
   double rmin_ = 0, rmax_ = 0, clearance_ = 0, margin_ = 0, band_ = 0;
   LengthScale scale_;  // for tangent_to_two
   RadiusClasses<kClasses> classes_;
-  Box box_;  // the polygon's box (local coordinates) grown by the clearance
+  Box box_;              // the polygon's box (local coordinates) grown by the clearance
+  double estimate_ = 0;  // of the disks the box takes (estimate_disks())
   double area_ = 0;
   double polygon_area_ = 0;  // shoelace, for the seeding rule
   int seeds_ = 0;
