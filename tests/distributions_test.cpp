@@ -168,7 +168,11 @@ TEST(Distributions, NormalMatchesItsCdf) {
 TEST(Distributions, NormalTailWindowsAreAccurate) {
   // Windows far in either tail (mean 3, sd 0.25: [5, 6] is 8 to 12 sd above the mean, [0.5, 1]
   // 10 to 8 sd below), where cdf differences of the untruncated law would be all rounding.
-  for (const auto& [lo, hi] : {std::pair{5.0, 6.0}, std::pair{0.5, 1.0}}) {
+  for (const auto& window : {std::pair{5.0, 6.0}, std::pair{0.5, 1.0}}) {
+    // Plain variables, not structured bindings: the lambdas below capture them, which C++20
+    // allows but Clang before 16 refuses.
+    const double lo = window.first;
+    const double hi = window.second;
     const fp::Radii radii = fp::Radii::normal(3.0, 0.25, lo, hi);
     const auto x = fp::sample_radii(radii, 50'000, kSeed);
     // Reference: upper-tail probabilities Q(z) = Phi(-z) for the upper window, Phi(z) below.

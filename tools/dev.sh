@@ -2,9 +2,10 @@
 # frontpack developer entry point: installs what is missing, configures, builds, runs.
 #
 #   tools/dev.sh demo   install packages, build (Release), fill a bundled shape (CSV + SVG in build/)
-#   tools/dev.sh test   install packages, build, run the whole test suite in Release and
-#                       under AddressSanitizer + UndefinedBehaviorSanitizer, then run each
-#                       fuzz target for FRONTPACK_FUZZ_SECONDS (default 60) (what CI runs)
+#   tools/dev.sh test   install packages, build, run the whole test suite in Release, under
+#                       AddressSanitizer + UndefinedBehaviorSanitizer, and built with Clang (the
+#                       pinned packings must come out the same bits), then run each fuzz target
+#                       for FRONTPACK_FUZZ_SECONDS (default 60) (what CI runs)
 #   tools/dev.sh build  install packages and build (Release) only
 #   tools/dev.sh fuzz [SECONDS]  build the libFuzzer programs (Clang) and run each target
 #
@@ -94,6 +95,8 @@ case "${1:-}" in
     run_tests asan
     build release
     run_tests release
+    build clang
+    run_tests clang
     run_fuzzers "${FRONTPACK_FUZZ_SECONDS:-60}"
     ;;
   fuzz)
