@@ -102,7 +102,8 @@ constexpr int kMoves = 0;
 constexpr int kWallCut = 1;
 constexpr int kWallMoves = 3;
 constexpr int kVoidMoves = 3;
-constexpr std::size_t kBlock = 16;       // cells per side of a block in the walled_ bitmap
+constexpr std::size_t kBlock = 16;  // cells per side of a block in the walled_ bitmap
+constexpr std::size_t kBlockCells = kBlock * kBlock;
 constexpr std::uint32_t kWallList = 16;  // a cell with more walls than this asks the wall tree
 constexpr std::size_t kLeafWalls = 4;    // walls per leaf of the wall tree
 // kSlideTurn, 0.35 rad (20 degrees): a vertex where the boundary turns by less is no corner: the
@@ -513,8 +514,7 @@ class BoundaryFront {
           }
           const auto ui = static_cast<std::size_t>(i);
           const auto uj = static_cast<std::size_t>(j);
-          const std::size_t place = uj % kBlock * kBlock + ui % kBlock;
-          pairs.push_back(Pair{static_cast<std::uint32_t>(block_of(uj, ui) * kBlock * kBlock + place),
+          pairs.push_back(Pair{static_cast<std::uint32_t>(block_of(uj, ui) * kBlockCells + place_in_block(uj, ui)),
                                static_cast<std::uint32_t>(e)});
         }
       }
@@ -522,14 +522,13 @@ class BoundaryFront {
     // A bit per block of kBlock x kBlock cells: whether any of them has walls. Most probes lie in
     // blocks without, and the bits of a whole front fit in the first-level cache, unlike the
     // cells' lists (a tenth of the front's cache misses were reading them).
-    constexpr std::size_t kCells = kBlock * kBlock;  // cells per block
     const std::size_t blocks = blocks_x_ * ((grid_.ny + kBlock - 1) / kBlock);
     walled_.assign((blocks + 63) / 64, 0);
     // The pairs grouped by block (a counting sort: stable, so each block's pairs stay in the order
     // of the walls).
     std::vector<std::size_t> start(blocks + 1, 0);
     for (const Pair& q : pairs) {
-      const std::size_t b = q.key / kCells;
+      const std::size_t b = q.key / kBlockCells;
       ++start[b + 1];
       walled_[b / 64] |= std::uint64_t{1} << (b % 64);
     }
@@ -544,12 +543,12 @@ class BoundaryFront {
     {
       std::vector<std::size_t> at(start.begin(), start.end() - 1);
       for (const Pair& q : pairs) {
-        grouped[at[q.key / kCells]++] = q;
+        grouped[at[q.key / kBlockCells]++] = q;
       }
     }
     release(pairs);
     // The lists of the walled blocks' cells, block by block: a block's cells' lists one after the
-    // other in wall_ids_, and kCells + 1 entries in cell_walls_ from block_first_[b], so that a
+    // other in wall_ids_, and kBlockCells + 1 entries in cell_walls_ from block_first_[b], so that a
     // cell's list runs from its entry to the next. Each block's pairs are put in place by cell
     // with a second counting sort, which keeps a cell's walls in the order of the walls (as when
     // every cell was tested in turn). (Begins for every cell of the grid were 4 bytes per cell, 4
@@ -559,9 +558,9 @@ class BoundaryFront {
     for (const std::uint64_t bits : walled_) {
       walled_blocks += static_cast<std::size_t>(std::popcount(bits));
     }
-    cell_walls_.reserve(walled_blocks * (kCells + 1));
+    cell_walls_.reserve(walled_blocks * (kBlockCells + 1));
     wall_ids_.resize(grouped.size());
-    std::array<std::uint32_t, kCells + 1> at{};
+    std::array<std::uint32_t, kBlockCells + 1> at{};
     for (std::size_t b = 0; b < blocks; ++b) {
       if (start[b] == start[b + 1]) {
         continue;
@@ -569,9 +568,9 @@ class BoundaryFront {
       block_first_[b] = static_cast<std::uint32_t>(cell_walls_.size());
       at.fill(0);
       for (std::size_t k = start[b]; k < start[b + 1]; ++k) {
-        ++at[grouped[k].key % kCells + 1];
+        ++at[grouped[k].key % kBlockCells + 1];
       }
-      for (std::size_t l = 0; l < kCells; ++l) {
+      for (std::size_t l = 0; l < kBlockCells; ++l) {
         at[l + 1] += at[l];
       }
       const auto base = static_cast<std::uint32_t>(start[b]);
@@ -579,20 +578,23 @@ class BoundaryFront {
         cell_walls_.push_back(base + first);
       }
       for (std::size_t k = start[b]; k < start[b + 1]; ++k) {
-        wall_ids_[base + at[grouped[k].key % kCells]++] = -(static_cast<std::int32_t>(grouped[k].wall) + 1);
+        wall_ids_[base + at[grouped[k].key % kBlockCells]++] = -(static_cast<std::int32_t>(grouped[k].wall) + 1);
       }
     }
   }
 
   // The range of cell (row, col)'s walls in wall_ids_; only for a cell in a walled block.
   [[nodiscard]] std::pair<std::uint32_t, std::uint32_t> cell_walls(std::size_t row, std::size_t col) const noexcept {
-    const std::uint32_t* at =
-        cell_walls_.data() + block_first_[block_of(row, col)] + row % kBlock * kBlock + col % kBlock;
+    const std::uint32_t* at = cell_walls_.data() + block_first_[block_of(row, col)] + place_in_block(row, col);
     return {at[0], at[1]};
   }
 
   [[nodiscard]] std::size_t block_of(std::size_t row, std::size_t col) const noexcept {
     return row / kBlock * blocks_x_ + col / kBlock;
+  }
+  // Cell (row, col)'s place in its block, the order of the block's lists.
+  [[nodiscard]] static std::size_t place_in_block(std::size_t row, std::size_t col) noexcept {
+    return row % kBlock * kBlock + col % kBlock;
   }
 
   // Whether segment wl meets the box [x0, x1] x [y0, y1] (Liang-Barsky clipping; conservative
