@@ -14,6 +14,7 @@
 #include "certify.hpp"
 #include "exact.hpp"
 #include "float_bits.hpp"
+#include "stop.hpp"
 #include "frontpack/fill.hpp"
 
 namespace frontpack {
@@ -84,8 +85,18 @@ void box_pass(std::span<const Disk> disks, const std::vector<std::uint32_t>& bat
 
 }  // namespace
 
+void contains(const Domain& domain, std::span<const Disk> disks, std::span<std::uint8_t> inside,
+              const std::stop_token& stop) {
+  constexpr std::size_t kBlock = std::size_t{1} << 16;
+  for (std::size_t begin = 0; begin < disks.size(); begin += kBlock) {
+    throw_if_stopped(stop);
+    const std::size_t n = std::min(kBlock, disks.size() - begin);
+    domain.contains(disks.subspan(begin, n), inside.subspan(begin, n));
+  }
+}
+
 void overlapping_pairs(std::span<const Disk> disks, std::vector<std::pair<std::size_t, std::size_t>>& out,
-                       std::size_t& candidates) {
+                       std::size_t& candidates, const std::stop_token& stop) {
   out.clear();
   candidates = 0;
   // Square-ish tiles at least 2 rmax wide and high (rmax: the largest radius), so that
@@ -167,6 +178,7 @@ void overlapping_pairs(std::span<const Disk> disks, std::vector<std::pair<std::s
       if (own == 0) {
         continue;
       }
+      throw_if_stopped(stop);
       Box extent;  // of the own disks' boxes
       for (const std::uint32_t k : batch) {
         const Disk& d = disks[k];
@@ -259,16 +271,16 @@ void measure_worst(const Domain& domain, std::span<const Disk> disks, CertifyRep
 
 }  // namespace
 
-CertifyReport certify(const Domain& domain, std::span<const Disk> disks) {
+CertifyReport certify(const Domain& domain, std::span<const Disk> disks, std::stop_token stop) {
   CertifyReport report;
   std::vector<std::uint8_t> inside(disks.size());
-  domain.contains(disks, inside);
+  detail::contains(domain, disks, inside, stop);
   for (std::size_t i = 0; i < disks.size(); ++i) {
     if (inside[i] == 0) {
       report.outside.push_back(i);
     }
   }
-  detail::overlapping_pairs(disks, report.overlapping, report.certificate.candidate_pairs);
+  detail::overlapping_pairs(disks, report.overlapping, report.certificate.candidate_pairs, stop);
   report.certificate.generated = disks.size();
   report.certificate.culled = report.outside.size();
   report.certificate.exact = true;

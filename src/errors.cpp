@@ -29,6 +29,8 @@ std::string format_point(Point p) {
 
 }  // namespace detail
 
+CancelledError::CancelledError() : Error("cancelled") {}
+
 IoError::IoError(const std::string& message, std::string path) : Error(message), path_(std::move(path)) {}
 
 WktError::WktError(Kind kind, std::string detail, std::size_t offset, std::size_t line, std::size_t column,

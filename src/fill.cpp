@@ -17,6 +17,7 @@
 #include "front.hpp"
 #include "frontpack/fill.hpp"
 #include "rng.hpp"
+#include "stop.hpp"
 
 namespace frontpack {
 
@@ -128,10 +129,17 @@ Packing run_fill(const Domain& domain, const FillOptions& options,
     req.clearance = clearance;
     req.max_disks = options.max_disks;
     req.fill_voids = options.fill_voids;
-    if (progress) {
+    const std::stop_token& stop = options.stop;
+    if (progress || stop.stop_possible()) {
       // The fraction of the area to cover that is covered: a random dense packing covers about
       // 0.85 of each box (the estimate's density), so this reaches about 1 at the end.
       req.tick = [&](std::size_t total, double r2) {
+        if (stop.stop_requested()) {
+          return false;
+        }
+        if (!progress) {
+          return true;
+        }
         const double covered = covered_before + std::numbers::pi * r2;
         return progress(Progress{total, std::min(0.99, covered / std::max(to_cover, 1e-300)), covered});
       };
@@ -157,6 +165,7 @@ Packing run_fill(const Domain& domain, const FillOptions& options,
     part_end.push_back(raw.size());
   }
 
+  detail::throw_if_stopped(options.stop);
   packing.stats.seconds_front = seconds_since(t0);
   t0 = std::chrono::steady_clock::now();
 
@@ -169,15 +178,15 @@ Packing run_fill(const Domain& domain, const FillOptions& options,
   {
     std::vector<std::uint8_t> inside(raw.size());
     if (domain.num_polygons() == 1) {
-      domain.contains(raw, inside);
+      detail::contains(domain, raw, inside, options.stop);
     } else {
       std::size_t begin = 0;
       for (std::size_t p = 0; p < part_end.size(); ++p) {
         const std::size_t n = part_end[p] - begin;
         if (n > 0) {
           const Domain part = Domain::from_polygons({domain.polygons()[p]});
-          part.contains(std::span<const Disk>(raw).subspan(begin, n),
-                        std::span<std::uint8_t>(inside).subspan(begin, n));
+          detail::contains(part, std::span<const Disk>(raw).subspan(begin, n),
+                           std::span<std::uint8_t>(inside).subspan(begin, n), options.stop);
         }
         begin = part_end[p];
       }
@@ -191,7 +200,7 @@ Packing run_fill(const Domain& domain, const FillOptions& options,
   // Sec. 2.4.3's final global search: drop one disk of every overlapping pair (the later one,
   // in the order of the sorted pairs: deterministic). Our generator never produces one.
   std::vector<std::pair<std::size_t, std::size_t>> pairs;
-  detail::overlapping_pairs(raw, pairs, packing.certificate.candidate_pairs);
+  detail::overlapping_pairs(raw, pairs, packing.certificate.candidate_pairs, options.stop);
   if (!pairs.empty()) {
     std::vector<std::uint8_t> drop(raw.size(), 0);
     for (const auto& [i, j] : pairs) {

@@ -205,7 +205,17 @@ std::vector<Disk> read_yade(std::istream& in, std::string_view source_name) {
 }
 
 std::vector<Disk> read_disks(const std::filesystem::path& path) {
-  const Format format = format_from_path(path);
+  Format format = Format::csv;
+  try {
+    format = format_from_path(path);
+  } catch (const OptionError&) {
+    // format_from_path lists every format written; name only those read.
+    const std::string ext = path.extension().string();
+    throw OptionError("'" + path.string() + "': " +
+                      (ext.empty() ? std::string("no file extension to tell the format by")
+                                   : "unknown disk file format '" + ext + "'") +
+                      "; frontpack reads .csv and Yade text (.txt, .yade)");
+  }
   if (format != Format::csv && format != Format::yade) {
     throw OptionError("'" + path.string() + "': reading " + to_string(format) +
                       " files is not supported; frontpack reads .csv and Yade text (.txt, .yade)");

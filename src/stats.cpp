@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "format.hpp"
+#include "stop.hpp"
 
 namespace frontpack {
 
@@ -157,7 +158,8 @@ class EdgeIndex {
 // Disk-disk contacts. Each disk is listed in every cell its box, grown by half the tolerance,
 // meets; a pair is examined only in the cell that holds the lower-left corner of the
 // intersection of the two boxes, so once. Linear for any ratio of radii.
-void count_contacts(std::span<const Disk> disks, double tol, PackingStats& s, std::vector<std::size_t>& degree) {
+void count_contacts(std::span<const Disk> disks, double tol, PackingStats& s, std::vector<std::size_t>& degree,
+                    const std::stop_token& stop) {
   const std::size_t n = disks.size();
   Box b;
   double sum_r = 0;
@@ -204,6 +206,7 @@ void count_contacts(std::span<const Disk> disks, double tol, PackingStats& s, st
     }
   }
   for (std::size_t c = 0; c < nx * ny; ++c) {
+    detail::throw_if_stopped(stop, c);
     for (std::size_t p = start[c]; p < start[c + 1]; ++p) {
       const Disk& a = disks[members[p]];
       const Box ba = box_of(a);
@@ -238,7 +241,7 @@ void count_contacts(std::span<const Disk> disks, double tol, PackingStats& s, st
 // stratified one, never worse than independent points). Rows of cells are swept upwards; the
 // disks meeting the row are kept in an active list (disks sorted by their lowest y).
 void sample_fractions(const Domain& domain, std::span<const Disk> disks, const EdgeIndex& edges, double w,
-                      std::size_t samples, PackingStats& s) {
+                      std::size_t samples, PackingStats& s, const std::stop_token& stop) {
   const Box b = domain.bbox();
   const double area = b.width() * b.height();
   if (samples == 0 || !(area > 0)) {
@@ -265,6 +268,7 @@ void sample_fractions(const Domain& domain, std::span<const Disk> disks, const E
   std::size_t n_band = 0;
   std::size_t c_band = 0;
   for (std::size_t j = 0; j < ny; ++j) {
+    detail::throw_if_stopped(stop);
     const double y0 = b.ymin + static_cast<double>(j) * sy;
     const double y1 = y0 + sy;
     for (std::size_t i = 0; i < nx; ++i) {
@@ -571,15 +575,16 @@ PackingStats measure(const Domain& domain, std::span<const Disk> disks, const St
                                           : std::max(1e-9 * rmax, 0x1p-42 * (domain.max_abs_coordinate() + 5 * rmax));
   const double w = s.band_width;
   const EdgeIndex edges(domain, w > 0 ? w : std::sqrt(domain.area()) / 64);
-  sample_fractions(domain, disks, edges, w, options.samples, s);
+  sample_fractions(domain, disks, edges, w, options.samples, s, options.stop);
   if (disks.empty()) {
     return s;
   }
   std::vector<std::size_t> degree(disks.size(), 0);
-  count_contacts(disks, s.contact_gap, s, degree);
+  count_contacts(disks, s.contact_gap, s, degree, options.stop);
   std::size_t interior_contacts = 0;
   std::size_t non_rattler_contacts = 0;
   for (std::size_t k = 0; k < disks.size(); ++k) {
+    detail::throw_if_stopped(options.stop, k);
     const Disk& d = disks[k];
     const std::size_t walls = wall_contacts(edges, d, s.contact_gap);
     s.wall_contacts += walls;

@@ -21,7 +21,14 @@ class Error : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-/// A file could not be opened or read.
+/// A run stopped because its std::stop_token was requested (FillOptions::stop, StatsOptions::stop,
+/// WriteOptions::stop, certify()'s `stop`): it returns nothing, and leaves no output file.
+class CancelledError : public Error {
+ public:
+  CancelledError();
+};
+
+/// A file could not be opened, read or written.
 class IoError : public Error {
  public:
   IoError(const std::string& message, std::string path);

@@ -16,6 +16,7 @@
 #include <memory>
 #include <optional>
 #include <span>
+#include <stop_token>
 #include <utility>
 #include <vector>
 
@@ -77,6 +78,9 @@ struct FillOptions {
   /// exceeds this many bytes (LimitError), so that a run is never killed by the operating system
   /// half-way. 0 (the default) means three quarters of the machine's physical memory.
   std::size_t memory_limit = 0;
+  /// Once a stop is requested (from another thread, or a signal-handling thread), the run throws
+  /// CancelledError within milliseconds, in generation or in certification, and returns nothing.
+  std::stop_token stop{};
 };
 
 /// The documented bound on fill()'s peak memory per generated disk (measured 42-61 bytes on the
@@ -122,15 +126,16 @@ struct Packing {
   bool cancelled = false;  ///< the progress callback asked to stop
 };
 
-/// Fills the domain. Throws OptionError, LimitError.
+/// Fills the domain. Throws OptionError, LimitError, CancelledError (FillOptions::stop).
 [[nodiscard]] Packing fill(const Domain& domain, const FillOptions& options);
 
 /// A fill with control: a progress callback (return false to cancel).
 class Generator {
  public:
   Generator(Domain domain, FillOptions options);
-  /// Called about every 1% of the work (and at the end); returning false cancels the run, which
-  /// then returns the certified packing of what was generated so far, with cancelled = true.
+  /// Called about every 2^14 disks generated (and at the end); returning false cancels the run,
+  /// which then returns the certified packing of what was generated so far, with cancelled =
+  /// true. (FillOptions::stop instead cancels the whole run, certification included.)
   void on_progress(std::function<bool(const Progress&)> callback);
   [[nodiscard]] Packing run();
 
@@ -159,7 +164,7 @@ struct CertifyReport {
 /// Certifies any set of disks against a domain, exactly: which disks are not inside the closed
 /// domain, and which pairs overlap (interiors intersect; touching is fine). Disks with a
 /// negative, NaN or infinite radius or centre are "outside". Pairs among outside disks are
-/// reported too.
-[[nodiscard]] CertifyReport certify(const Domain& domain, std::span<const Disk> disks);
+/// reported too. Throws CancelledError once `stop` is requested.
+[[nodiscard]] CertifyReport certify(const Domain& domain, std::span<const Disk> disks, std::stop_token stop = {});
 
 }  // namespace frontpack

@@ -8,13 +8,15 @@
 //
 // Errors: OptionError (declared in frontpack/fill.hpp) for an unknown format or a bad writer
 // option, IoError (with the OS's reason) for a file that cannot be read or written, DiskFileError
-// (with file, line and column) for a malformed disk file.
+// (with file, line and column) for a malformed disk file, CancelledError once WriteOptions::stop
+// (or a writer's `stop`) is requested.
 #pragma once
 
 #include <cstdint>
 #include <filesystem>
 #include <iosfwd>
 #include <span>
+#include <stop_token>
 #include <string_view>
 #include <vector>
 
@@ -61,23 +63,27 @@ struct LammpsOptions {
   std::int64_t atom_type = 1;  ///< type of every atom, >= 1; the header declares this many atom types
 };
 
-/// Options of write_file, per format.
+/// Options of write() and write_file(), per format.
 struct WriteOptions {
   SvgStyle svg;
   LammpsOptions lammps;
+  /// Once a stop is requested, the writer throws CancelledError (within a few thousand disks);
+  /// write_file() then leaves the target as it was.
+  std::stop_token stop{};
 };
 
 /// A minimal SVG picture: the domain's outline (holes included) and the disks. Coordinates are
 /// rounded to 0.001 px: a picture, not a data file.
-void write_svg(std::ostream& out, const Domain& domain, std::span<const Disk> disks, const SvgStyle& style = {});
+void write_svg(std::ostream& out, const Domain& domain, std::span<const Disk> disks, const SvgStyle& style = {},
+               std::stop_token stop = {});
 
 /// CSV: a header line "x,y,r", then one line "x,y,r" per disk (centre and radius), in order.
-void write_csv(std::ostream& out, std::span<const Disk> disks);
+void write_csv(std::ostream& out, std::span<const Disk> disks, std::stop_token stop = {});
 
 /// Yade text for `ymport.textExt(file, format='x_y_z_r')` (or `ymport.text(file)`): a first line
 /// "#format x_y_z_r", then one line "x y 0 r" per disk, in order (centre, z = 0, radius), separated
 /// by single spaces, no blank lines (textExt fails on a blank line).
-void write_yade(std::ostream& out, std::span<const Disk> disks);
+void write_yade(std::ostream& out, std::span<const Disk> disks, std::stop_token stop = {});
 
 /// LAMMPS data file for `atom_style sphere` (read with `read_data`; with `dimension 2` use
 /// `boundary f f p` or `p p p`):
@@ -95,19 +101,25 @@ void write_yade(std::ostream& out, std::span<const Disk> disks);
 /// does not contain every disk fully (decided exactly: x - r >= xmin and x + r <= xmax in floating
 /// point are exact tests, because rounding is monotone and the bounds are doubles), or if an option
 /// is out of range.
-void write_lammps(std::ostream& out, std::span<const Disk> disks, const Box& box, const LammpsOptions& options = {});
+void write_lammps(std::ostream& out, std::span<const Disk> disks, const Box& box, const LammpsOptions& options = {},
+                  std::stop_token stop = {});
 
 /// VTK XML PolyData (ASCII, version 1.0), for ParaView: one point per disk centre (Float64, z = 0),
 /// one vertex cell per point, and point data `radius` (Float64, the active scalars: use it as the
 /// scale array of the Point Gaussian representation or of a Glyph filter for true sizes) and `id`
 /// (Int64, the disk's 0-based index in `disks`).
-void write_vtp(std::ostream& out, std::span<const Disk> disks);
+void write_vtp(std::ostream& out, std::span<const Disk> disks, std::stop_token stop = {});
 
 /// Writes `disks` (and, for SVG, the domain; for LAMMPS, the domain's bounding box as the box) to
-/// `path` in `format`. The text goes to a new temporary file beside `path`, is flushed to disk,
-/// and is renamed over `path` in one step: readers see the old file or the complete new one,
-/// never a partial file. On failure the temporary file is removed and IoError names the path and
-/// the OS's reason; OptionError as the writers.
+/// `out` in `format`, with the writer of that format.
+void write(std::ostream& out, Format format, const Domain& domain, std::span<const Disk> disks,
+           const WriteOptions& options = {});
+
+/// write() to `path` through an OutputFile (frontpack/output_file.hpp): a regular file (or a new
+/// one, or the target of a symlink) is replaced in one step, so readers see the old file or the
+/// complete new one, never a partial file; /dev/stdout, devices and FIFOs are written through.
+/// On failure or cancellation the temporary file is removed and the target is left as it was;
+/// IoError names the path and the OS's reason; OptionError as the writers; CancelledError.
 void write_file(const std::filesystem::path& path, Format format, const Domain& domain, std::span<const Disk> disks,
                 const WriteOptions& options = {});
 

@@ -43,6 +43,7 @@
 #include <cstddef>
 #include <optional>
 #include <span>
+#include <stop_token>
 #include <string>
 #include <vector>
 
@@ -64,6 +65,8 @@ struct StatsOptions {
   std::size_t samples = 1'000'000;
   /// Bins of the size histogram (log-spaced in radius).
   std::size_t histogram_bins = 20;
+  /// Once a stop is requested, measure() throws CancelledError.
+  std::stop_token stop{};
 };
 
 /// One class of the per-class table: radii in (previous row's radius, radius]. Fractions in
