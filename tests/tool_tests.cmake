@@ -119,7 +119,7 @@ frontpack_tool_check(fill_invalid_domain 4 "invalid domain: polygon 0, outer rin
 frontpack_tool_check(fill_missing_domain_argument 1 "DOMAIN or --wkt" ARGS fill --radius constant:0.1)
 frontpack_tool_check(fill_unknown_option 1 "--colour" ARGS fill ${SQ} --colour red)
 frontpack_tool_check(fill_help 0 "Example:.*frontpack fill shapes/plate_with_holes.wkt.*--json summary.json" ARGS fill --help)
-frontpack_tool_check(help_exit_codes 0 "6 packing not certified.*7 malformed disk file.*130 interrupted" ARGS --help)
+frontpack_tool_check(help_exit_codes 0 "6 packing not certified.*7 malformed disk file.*8 no disk fits.*9 stopped.*130/143/129" ARGS --help)
 
 # check: exact certification of hand-made files.
 frontpack_tool_check(check_good 0 "disks: +5 .*outside: +0 disks.*overlaps: +0 pairs.*result: +certified"
@@ -184,17 +184,19 @@ frontpack_tool_check(fill_json_unwritable 2 "cannot write '/nonexistent/dir/s\\.
   NO_FILES ${TOOL_OUT}/fill_json_unwritable/p.csv
   ARGS fill ${S}/l_shape.wkt -o ${TOOL_OUT}/fill_json_unwritable/p.csv --json /nonexistent/dir/s.json)
 
-# Ctrl-C: SIGINT one second into a run of about ten million disks cancels it through the progress
-# callback: exit 130 and nothing written.
-find_program(TIMEOUT_PROGRAM timeout)
-if(TIMEOUT_PROGRAM)
-  set(O ${TOOL_OUT}/fill_interrupted)
-  set(interrupt_args --preserve-status -s INT 1 $<TARGET_FILE:frontpack_tool> fill ${SQ} --radius uniform:0.0001,0.0002
-      -o ${O}/p.csv --json ${O}/s.json)
-  add_test(NAME tool.fill_interrupted
-    COMMAND ${CMAKE_COMMAND} -DTOOL=${TIMEOUT_PROGRAM} -DEXPECTED_EXIT=130 "-DREGEX=^frontpack: interrupted\\; nothing written"
-            "-DARGS=${interrupt_args}" -DOUT_DIR=${O} "-DNO_FILES=${O}/p.csv;${O}/s.json"
-            -P ${CMAKE_CURRENT_SOURCE_DIR}/run_tool.cmake)
+# Files and signals, as a user meets them (tests/tool/files_and_signals.py): /dev/stdout, devices,
+# FIFOs and symlinks; a file given for two uses; SIGINT, SIGTERM and SIGHUP in every phase; fills
+# that place no disk or stop at --max-disks. One test per class of cases.
+find_program(FRONTPACK_TOOL_PYTHON3 python3)
+if(FRONTPACK_TOOL_PYTHON3)
+  foreach(group Outputs Clobbering Outcomes Signals)
+    add_test(NAME tool.files_and_signals.${group}
+      COMMAND ${FRONTPACK_TOOL_PYTHON3} ${CMAKE_CURRENT_SOURCE_DIR}/tool/files_and_signals.py
+              $<TARGET_FILE:frontpack_tool> ${PROJECT_SOURCE_DIR}/shapes -k ${group})
+    set_tests_properties(tool.files_and_signals.${group} PROPERTIES TIMEOUT 900)
+  endforeach()
+  # The signal tests time the tool's exit: alone on the machine.
+  set_tests_properties(tool.files_and_signals.Signals PROPERTIES RUN_SERIAL TRUE)
 endif()
 
 # The pictures' captions load fontconfig, whose patterns LeakSanitizer mistakes for leaks

@@ -2,42 +2,46 @@
 // library itself never prints.
 //
 // Exit codes (also in `frontpack --help` and the README):
-//   0 success, 1 usage error (unknown option, missing argument), 2 unreadable input or unwritable
-//   output file, 3 WKT syntax or unsupported geometry, 4 invalid domain, 5 invalid option (radius,
-//   method, format, width, limit), 6 packing not certified (check: overlaps or disks outside),
-//   7 malformed disk file, 70 internal error, 130 interrupted (Ctrl-C; nothing written).
+//   0 success, 1 usage error (unknown option, missing argument, a file given for two uses),
+//   2 unreadable input or unwritable output file, 3 WKT syntax or unsupported geometry, 4 invalid
+//   domain, 5 invalid option (radius, method, format, width, seed, limit), 6 packing not certified
+//   (check: overlaps or disks outside), 7 malformed disk file, 8 no disk fits (fill: nothing
+//   written), 9 stopped at --max-disks (fill: the certified partial packing is written),
+//   70 internal error, 128 + N stopped by signal N (130 SIGINT, 143 SIGTERM, 129 SIGHUP; nothing
+//   written).
 //
-// Every output file (-o, --json) is written to a temporary file beside it and renamed: a failed
-// or interrupted run never leaves a partial file.
-#include <unistd.h>
+// Files (tools/outputs.hpp): outputs are written to temporary files and committed together at
+// the end, so a failed or interrupted run leaves every file as it was; /dev/stdout, devices and
+// FIFOs are written through; a file given for two uses is refused before any work.
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
-#include <cerrno>
-#include <chrono>
+#include <charconv>
 #include <cmath>
 #include <csignal>
-#include <cstdio>
-#include <cstring>
+#include <cstdint>
 #include <exception>
 #include <filesystem>
 #include <iostream>
-#include <nlohmann/json.hpp>
+#include <limits>
 #include <numbers>
-#include <optional>
 #include <sstream>
 #include <string>
-#include <variant>
 #include <vector>
 
-#include "atomic_file.hpp"
 #include "frontpack/frontpack.hpp"
+#include "outputs.hpp"
 #include "render.hpp"
+#include "report.hpp"
+#include "signals.hpp"
 
 namespace {
 
-using Json = nlohmann::ordered_json;
-using Clock = std::chrono::steady_clock;
+using frontpack_tool::Clock;
+using frontpack_tool::fmt;
+using frontpack_tool::fmt4;
+using frontpack_tool::Json;
+using frontpack_tool::seconds_since;
 
 enum Exit : int {
   ok = 0,
@@ -48,30 +52,46 @@ enum Exit : int {
   bad_option = 5,
   not_certified = 6,
   bad_disk_file = 7,
+  nothing_fits = 8,
+  max_disks_reached = 9,
   internal = 70,
-  interrupted = 130,
 };
 
 constexpr const char* kExitCodes =
     "Exit codes: 0 success, 1 usage error, 2 unreadable input or unwritable output, 3 WKT syntax or\n"
-    "unsupported geometry, 4 invalid domain, 5 invalid option (radius, method, format, width, limit),\n"
-    "6 packing not certified (check), 7 malformed disk file, 70 internal error, 130 interrupted.\n"
-    "Output files are written to a temporary file and renamed: never a partial file.";
+    "unsupported geometry, 4 invalid domain, 5 invalid option (radius, method, format, width, seed,\n"
+    "limit), 6 packing not certified (check), 7 malformed disk file, 8 no disk fits (fill), 9 stopped\n"
+    "at --max-disks (fill; the partial packing is written), 70 internal error, 130/143/129 stopped\n"
+    "by SIGINT/SIGTERM/SIGHUP.\n"
+    "Outputs are written to temporary files and renamed together at the end: a failed or interrupted\n"
+    "run leaves every file as it was. /dev/stdout, devices and FIFOs are written through.";
 
-double seconds_since(Clock::time_point t0) {
-  return std::chrono::duration<double>(Clock::now() - t0).count();
+// The one signal watcher of the process (made first in main, before any other thread).
+frontpack_tool::SignalWatch* g_signals = nullptr;
+
+std::stop_token stop_token() {
+  return g_signals != nullptr ? g_signals->token() : std::stop_token{};
 }
 
-std::string fmt(double v) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.10g", v);
-  return buf;
-}
-
-std::string fmt4(double v) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.4f", v);
-  return buf;
+// A whole number for OPTION, in [0, max]: digits only (no sign, no exponent, no fraction), so
+// that "-1" or "1e23" is refused rather than wrapped or truncated. Throws OptionError naming the
+// option and the text given.
+std::uint64_t parse_count(const char* option, const std::string& text, std::uint64_t max) {
+  std::uint64_t value = 0;
+  const char* first = text.data();
+  const char* last = text.data() + text.size();
+  const bool digits = !text.empty() && text.find_first_not_of("0123456789") == std::string::npos;
+  const auto [end, ec] = digits ? std::from_chars(first, last, value) : std::from_chars_result{first, std::errc()};
+  const std::string range = "a whole number from 0 to " + std::to_string(max);
+  const std::string given = text.size() > 40 ? text.substr(0, 40) + "..." : text;
+  if (!digits) {
+    throw frontpack::OptionError(std::string(option) + " " + given + ": expected " + range +
+                                 (text.empty() ? "" : " (digits only)"));
+  }
+  if (ec == std::errc::result_out_of_range || end != last || value > max) {
+    throw frontpack::OptionError(std::string(option) + " " + given + ": too large; expected " + range);
+  }
+  return value;
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -80,18 +100,25 @@ std::string fmt4(double v) {
 struct DomainSource {
   std::string file;
   std::string wkt;
-  [[nodiscard]] std::string name() const { return wkt.empty() ? file : std::string("--wkt"); }
+  CLI::Option* wkt_option = nullptr;
+  [[nodiscard]] bool from_text() const { return wkt_option != nullptr && wkt_option->count() > 0; }
+  [[nodiscard]] std::string name() const { return from_text() ? std::string("--wkt") : file; }
 };
 
 void add_domain_options(CLI::App& cmd, DomainSource& src) {
   auto* file = cmd.add_option("DOMAIN", src.file, "WKT file with a POLYGON or MULTIPOLYGON");
-  auto* text = cmd.add_option("--wkt", src.wkt, "the domain as WKT text instead of a file");
-  file->excludes(text);
-  text->excludes(file);
+  src.wkt_option = cmd.add_option("--wkt", src.wkt, "the domain as WKT text instead of a file");
+  file->excludes(src.wkt_option);
+  src.wkt_option->excludes(file);
 }
 
 frontpack::Domain load(const DomainSource& src) {
-  if (!src.wkt.empty()) {
+  if (src.from_text()) {
+    if (src.wkt.find_first_not_of(" \t\r\n") == std::string::npos) {
+      throw frontpack::WktError(frontpack::WktError::Kind::empty_geometry,
+                                "the WKT text given with --wkt is empty; expected a POLYGON or MULTIPOLYGON", 0, 1, 1,
+                                "--wkt");
+    }
     return frontpack::Domain::from_wkt(src.wkt);
   }
   if (src.file.empty()) {
@@ -100,253 +127,23 @@ frontpack::Domain load(const DomainSource& src) {
   return frontpack::Domain::from_wkt_file(src.file);
 }
 
-// ---------------------------------------------------------------------------------------------
-// Outputs: data formats through the library's write_file, pictures through the Cairo renderer.
-
-using OutputFormat = std::variant<frontpack::Format, frontpack_tool::Picture>;
-
-struct Output {
-  std::filesystem::path path;
-  OutputFormat format;
-};
-
-std::string format_name(const OutputFormat& f) {
-  if (const auto* picture = std::get_if<frontpack_tool::Picture>(&f)) {
-    return *picture == frontpack_tool::Picture::png ? "png" : *picture == frontpack_tool::Picture::svg ? "svg" : "pdf";
+std::vector<frontpack_tool::FileUse> domain_inputs(const DomainSource& src) {
+  if (src.from_text() || src.file.empty()) {
+    return {};
   }
-  return frontpack::to_string(std::get<frontpack::Format>(f));
+  return {{"DOMAIN", src.file}};
 }
 
-// --format NAME (for every output) or the extension. Pictures (png, svg, pdf) are drawn by the
-// tool's renderer, so that fill and render draw the same picture.
-OutputFormat resolve_format(const std::filesystem::path& path, const std::string& name, bool pictures_only) {
-  const std::string known = pictures_only ? "png, svg or pdf" : "csv, yade, lammps, vtp, png, svg or pdf";
-  if (!name.empty()) {
-    if (const auto picture = frontpack_tool::picture_from_name(name)) {
-      return *picture;
-    }
-    if (!pictures_only) {
-      try {
-        return frontpack::format_from_name(name);
-      } catch (const frontpack::OptionError&) {
-      }
-    }
-    throw frontpack::OptionError(std::string("--format ") + name + ": unknown format; expected " + known);
+std::vector<frontpack_tool::FileUse> output_uses(const std::vector<frontpack_tool::Output>& outputs,
+                                                 const std::string& json) {
+  std::vector<frontpack_tool::FileUse> uses;
+  for (const auto& o : outputs) {
+    uses.push_back({"-o", o.path});
   }
-  if (const auto picture = frontpack_tool::picture_from_path(path)) {
-    return *picture;
+  if (!json.empty()) {
+    uses.push_back({"--json", json});
   }
-  if (pictures_only) {
-    throw frontpack::OptionError(std::string("-o ") + path.string() + ": unknown picture format '" +
-                                 path.extension().string() + "'; use .png, .svg or .pdf (or --format)");
-  }
-  try {
-    return frontpack::format_from_path(path);
-  } catch (const frontpack::OptionError&) {
-    // The library's message lists only its own formats; name the tool's pictures too.
-    const std::string ext = path.extension().string();
-    std::string message("-o ");
-    message.append(path.string());
-    message.append(ext.empty() ? std::string(": no file extension to tell the format by")
-                               : std::string(": unknown format '") + ext + "'");
-    message.append(
-        "; use .csv, .txt or .yade (Yade), .data or .lmp (LAMMPS), .vtp (ParaView), .png, .svg or .pdf, "
-        "or --format NAME");
-    throw frontpack::OptionError(message);
-  }
-}
-
-// Fails early (before a long run) when an output's directory does not exist or is not writable.
-void check_writable(const std::filesystem::path& path) {
-  std::filesystem::path dir = path.parent_path();
-  if (dir.empty()) {
-    dir = ".";
-  }
-  if (::access(dir.c_str(), W_OK) != 0) {
-    const int err = errno;
-    throw frontpack::IoError(std::string("cannot write '") + path.string() + "': " + std::strerror(err), path.string());
-  }
-  if (std::filesystem::is_directory(path)) {
-    throw frontpack::IoError(std::string("cannot write '") + path.string() + "': it is a directory", path.string());
-  }
-}
-
-std::vector<Output> resolve_outputs(const std::vector<std::string>& paths, const std::string& format,
-                                    bool pictures_only) {
-  std::vector<Output> out;
-  for (const std::string& p : paths) {
-    out.push_back({p, resolve_format(p, format, pictures_only)});
-  }
-  for (const Output& o : out) {
-    check_writable(o.path);
-  }
-  return out;
-}
-
-void write_output(const Output& o, const frontpack::Domain& domain, std::span<const frontpack::Disk> disks,
-                  const frontpack_tool::RenderOptions& picture_options) {
-  if (const auto* picture = std::get_if<frontpack_tool::Picture>(&o.format)) {
-    frontpack_tool::render(o.path, *picture, domain, disks, picture_options);
-  } else {
-    frontpack::WriteOptions options;
-    options.svg.width_px = picture_options.width_px;
-    frontpack::write_file(o.path, std::get<frontpack::Format>(o.format), domain, disks, options);
-  }
-}
-
-void write_json(const std::string& path, const Json& json) {
-  frontpack_tool::AtomicFile out(path);
-  const std::string text = json.dump(2) + "\n";
-  std::fwrite(text.data(), 1, text.size(), out.file());
-  out.commit();
-}
-
-// ---------------------------------------------------------------------------------------------
-// Progress bar and Ctrl-C.
-
-volatile std::sig_atomic_t g_interrupted = 0;
-
-extern "C" void on_sigint(int /*signal*/) {
-  g_interrupted = 1;
-}
-
-// Installs the SIGINT handler for its lifetime (only around the run: Ctrl-C during loading or
-// writing keeps its default effect, which cannot leave a partial output file either).
-class InterruptScope {
- public:
-  InterruptScope() {
-    previous_ = std::signal(SIGINT, on_sigint);
-    if (previous_ == SIG_IGN) {
-      std::signal(SIGINT, SIG_IGN);  // started with Ctrl-C ignored (nohup, a background job): keep it so
-    }
-  }
-  ~InterruptScope() { std::signal(SIGINT, previous_ == SIG_ERR ? SIG_DFL : previous_); }
-  InterruptScope(const InterruptScope&) = delete;
-  InterruptScope& operator=(const InterruptScope&) = delete;
-
- private:
-  void (*previous_)(int) = SIG_DFL;
-};
-
-// On a terminal only, after half a second: "[#####.....]  42% of area  123456 disks  1.2e+06 disks/s  ETA 3 s".
-class ProgressBar {
- public:
-  explicit ProgressBar(bool enabled) : enabled_(enabled && ::isatty(STDERR_FILENO) == 1) {}
-  ProgressBar(const ProgressBar&) = delete;
-  ProgressBar& operator=(const ProgressBar&) = delete;
-  ~ProgressBar() { clear(); }
-
-  void update(const frontpack::Progress& p) {
-    if (!enabled_) {
-      return;
-    }
-    const double t = seconds_since(start_);
-    if (t < 0.5 || (shown_ && t - last_ < 0.1 && p.fraction < 1.0)) {
-      return;
-    }
-    last_ = t;
-    shown_ = true;
-    constexpr int kWidth = 30;
-    const double f = std::clamp(p.fraction, 0.0, 1.0);
-    const int filled = static_cast<int>(f * kWidth);
-    std::string line("\r[");
-    line.append(static_cast<std::size_t>(filled), '#').append(static_cast<std::size_t>(kWidth - filled), '.');
-    char tail[160];
-    const double rate = static_cast<double>(p.disks) / t;
-    const double eta = f > 0.01 ? t * (1 - f) / f : NAN;
-    if (std::isfinite(eta)) {
-      std::snprintf(tail, sizeof tail, "] %3.0f%% of area  %zu disks  %.3g disks/s  ETA %.0f s", 100 * f, p.disks, rate,
-                    eta);
-    } else {
-      std::snprintf(tail, sizeof tail, "] %3.0f%% of area  %zu disks  %.3g disks/s", 100 * f, p.disks, rate);
-    }
-    line.append(tail).append("\033[K");
-    std::fputs(line.c_str(), stderr);
-    std::fflush(stderr);
-  }
-
-  void clear() {
-    if (shown_) {
-      std::fputs("\r\033[K", stderr);
-      std::fflush(stderr);
-      shown_ = false;
-    }
-  }
-
- private:
-  bool enabled_;
-  bool shown_ = false;
-  double last_ = 0;
-  Clock::time_point start_ = Clock::now();
-};
-
-// ---------------------------------------------------------------------------------------------
-// JSON pieces shared by fill and stats.
-
-Json domain_json(const DomainSource& src, const frontpack::Domain& domain) {
-  return Json{{"source", src.name()},
-              {"area", domain.area()},
-              {"polygons", domain.num_polygons()},
-              {"holes", domain.num_holes()},
-              {"vertices", domain.num_vertices()}};
-}
-
-Json sizes_json(const frontpack::SizeStats& s) {
-  Json j{{"count", s.count},
-         {"min", s.rmin},
-         {"max", s.rmax},
-         {"mean", s.mean},
-         {"sd", s.sd},
-         {"median_by_number", s.median_number},
-         {"median_by_area", s.median_area}};
-  if (s.compared) {
-    j["requested"] = s.requested;
-    j["ks_by_number"] = s.ks_number;
-    j["ks_by_area"] = s.ks_area;
-  }
-  return j;
-}
-
-Json stats_json(const frontpack::PackingStats& s) {
-  return Json{{"packing_fraction", s.packing_fraction},
-              {"interior_fraction", s.interior_fraction},
-              {"interior_fraction_error", s.interior_error},
-              {"band_fraction", s.band_fraction},
-              {"band_fraction_error", s.band_error},
-              {"band_width", s.band_width},
-              {"void_ratio", std::isfinite(s.void_ratio) ? Json(s.void_ratio) : Json(nullptr)},
-              {"mean_coordination", s.mean_coordination},
-              {"interior_coordination", s.interior_coordination},
-              {"contacts", s.contacts},
-              {"wall_contacts", s.wall_contacts},
-              {"rattlers", s.rattlers},
-              {"contact_gap", s.contact_gap},
-              {"band_disks", s.band_disks},
-              {"band_median_by_area", s.band_median_area},
-              {"inside_median_by_area", s.inside_median_area},
-              {"segregation_ks_by_area", s.segregation_ks_area},
-              {"radius", sizes_json(s.sizes)}};
-}
-
-std::string fraction_line(const frontpack::PackingStats& s) {
-  std::string line = fmt4(s.packing_fraction);
-  line.append(" overall");
-  if (s.interior_samples > 0) {
-    line.append(", ").append(fmt4(s.interior_fraction)).append(" interior (+/- ").append(fmt4(s.interior_error));
-    line.append(", farther than ").append(fmt(s.band_width)).append(" from the boundary)");
-  }
-  if (s.band_samples > 0) {
-    line.append(", ").append(fmt4(s.band_fraction)).append(" in the band");
-  }
-  return line;
-}
-
-std::string radii_line(const frontpack::SizeStats& s) {
-  if (s.count == 0) {
-    return "none";
-  }
-  return std::string("min ") + fmt(s.rmin) + ", mean " + fmt(s.mean) + ", max " + fmt(s.rmax) + ", sd " + fmt(s.sd) +
-         ", median by area " + fmt(s.median_area);
+  return uses;
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -370,12 +167,14 @@ int run_info(const DomainSource& src) {
 // ---------------------------------------------------------------------------------------------
 // fill
 
+constexpr const char* kDefaultRadius = "uniform:0.01,0.05";
+
 struct FillArgs {
   DomainSource src;
   std::string method = "boundary";
-  std::string radius = "uniform:0.01,0.05";
-  std::uint64_t seed = 0;
-  std::size_t max_disks = frontpack::FillOptions{}.max_disks;
+  std::string radius;  // empty: kDefaultRadius
+  std::string seed = "0";
+  std::string max_disks = std::to_string(frontpack::FillOptions{}.max_disks);
   std::vector<std::string> outputs;
   std::string format;
   std::string json;
@@ -384,103 +183,162 @@ struct FillArgs {
   bool quiet = false;
 };
 
+frontpack::Method parse_method(const std::string& name) {
+  if (name == "closed") {
+    return frontpack::Method::closed;
+  }
+  if (name == "open") {
+    return frontpack::Method::open;
+  }
+  if (name == "boundary") {
+    return frontpack::Method::boundary;
+  }
+  throw frontpack::OptionError(std::string("--method ") + name + ": expected closed, open or boundary");
+}
+
+// The file a `curve:FILE` radius spec reads, as an input that no output may overwrite.
+void add_curve_input(const std::string& spec, std::vector<frontpack_tool::FileUse>& inputs) {
+  constexpr std::string_view kCurve = "curve:";
+  if (spec.compare(0, kCurve.size(), kCurve) == 0) {
+    inputs.push_back({"--radius curve:FILE", spec.substr(kCurve.size())});
+  }
+}
+
+Json fill_json(const FillArgs& a, const std::string& spec, const frontpack::FillOptions& options,
+               const frontpack::Domain& domain, const frontpack::Packing& p, const frontpack::PackingStats& s,
+               const std::vector<frontpack_tool::Output>& outputs, double seconds_stats, double seconds_total) {
+  const frontpack::Certificate& c = p.certificate;
+  Json outs = Json::array();
+  for (const auto& o : outputs) {
+    outs.push_back(Json{{"path", o.path.string()}, {"format", frontpack_tool::format_name(o.format)}});
+  }
+  Json j{{"frontpack_version", frontpack::version_string},
+         {"command", "fill"},
+         {"domain", frontpack_tool::domain_json(a.src.name(), domain)},
+         {"method", frontpack::to_string(options.method)},
+         {"radius_spec", spec},
+         {"radius_spec_given", !a.radius.empty()},
+         {"radius_distribution", options.radii.describe()},
+         {"seed", options.seed},
+         {"disks", p.disks.size()},
+         {"truncated", p.truncated}};
+  j.update(frontpack_tool::stats_json(s));
+  j["certificate"] = Json{{"certified", true},
+                          {"generated", c.generated},
+                          {"culled", c.culled},
+                          {"dropped", c.dropped},
+                          {"candidate_pairs", c.candidate_pairs},
+                          {"exact", c.exact}};
+  j["seconds"] = Json{{"front", p.stats.seconds_front},
+                      {"cull", p.stats.seconds_cull},
+                      {"overlap_pass", p.stats.seconds_overlap},
+                      {"statistics", seconds_stats},
+                      {"total", seconds_total}};
+  j["outputs"] = outs;
+  return j;
+}
+
+// Why a fill placed no disk. A disk of radius r inside the domain lies in one polygon's bounding
+// box and has area pi r^2 at most the domain's: r <= min(sqrt(area / pi), the largest polygon box's
+// half-side), a cheap bound that is exact for rectangles and corridors.
+std::string why_no_disk(const frontpack::Domain& domain, const frontpack::FillOptions& options, const std::string& spec,
+                        std::size_t generated) {
+  double half_side = 0;
+  for (std::size_t k = 0; k < domain.num_polygons(); ++k) {
+    const frontpack::Box b = domain.bbox(k);
+    half_side = std::max(half_side, 0.5 * std::min(b.width(), b.height()));
+  }
+  const double bound = std::min(std::sqrt(domain.area() / std::numbers::pi), half_side);
+  const double rmin = options.radii.min();
+  if (rmin > bound) {
+    return "no disk fits: the smallest radius of " + spec + " is " + fmt(rmin) + ", and no disk of radius above " +
+           fmt(bound) + " fits in this domain; use smaller radii";
+  }
+  return std::string("no disk was placed: the ") + frontpack::to_string(options.method) + " form generated " +
+         std::to_string(generated) + (generated == 1 ? " disk" : " disks") +
+         " and none lay inside the domain; use smaller radii" +
+         (options.method == frontpack::Method::boundary ? "" : " or --method boundary");
+}
+
 int run_fill(const FillArgs& a) {
   const auto t_start = Clock::now();
-  const frontpack::Domain domain = load(a.src);
+  const std::string spec = a.radius.empty() ? std::string(kDefaultRadius) : a.radius;
   frontpack::FillOptions options;
-  if (a.method == "closed") {
-    options.method = frontpack::Method::closed;
-  } else if (a.method == "open") {
-    options.method = frontpack::Method::open;
-  } else if (a.method == "boundary") {
-    options.method = frontpack::Method::boundary;
-  } else {
-    throw frontpack::OptionError(std::string("--method ") + a.method + ": expected closed, open or boundary");
-  }
-  options.radii = frontpack::parse_radii(a.radius);
-  options.seed = a.seed;
-  options.max_disks = a.max_disks;
-  const std::vector<Output> outputs = resolve_outputs(a.outputs, a.format, false);
-  if (!a.json.empty()) {
-    check_writable(a.json);
-  }
+  options.method = parse_method(a.method);
+  options.radii = frontpack::parse_radii(spec);
+  options.seed = parse_count("--seed", a.seed, std::numeric_limits<std::uint64_t>::max());
+  options.max_disks = parse_count("--max-disks", a.max_disks, std::numeric_limits<std::uint64_t>::max());
+  options.stop = stop_token();
+  const std::vector<frontpack_tool::Output> outputs = frontpack_tool::resolve_outputs(a.outputs, a.format, false);
+  std::vector<frontpack_tool::FileUse> inputs = domain_inputs(a.src);
+  add_curve_input(spec, inputs);
+  frontpack_tool::check_files(inputs, output_uses(outputs, a.json));
+  const frontpack::Domain domain = load(a.src);
 
   frontpack::Packing p;
   {
-    ProgressBar bar(!a.quiet);
-    const InterruptScope interrupt_scope;
-    g_interrupted = 0;
+    frontpack_tool::ProgressBar bar(!a.quiet);
     frontpack::Generator generator(domain, options);
     generator.on_progress([&bar](const frontpack::Progress& progress) {
       bar.update(progress);
-      return g_interrupted == 0;
+      return true;
     });
     p = generator.run();
-    bar.clear();
-    if (p.cancelled || g_interrupted != 0) {
-      std::cerr << "frontpack: interrupted; nothing written\n";
-      return interrupted;
-    }
+  }
+  if (p.disks.empty()) {
+    std::cerr << "frontpack: " << why_no_disk(domain, options, spec, p.certificate.generated) << "; nothing written\n";
+    return nothing_fits;
   }
 
+  // Statistics only where they are shown or written.
   const auto t_stats = Clock::now();
-  const frontpack::PackingStats s = frontpack::measure(domain, p.disks, {.requested = options.radii});
+  frontpack::PackingStats s;
+  if (!a.quiet || !a.json.empty()) {
+    s = frontpack::measure(domain, p.disks, {.requested = options.radii, .stop = options.stop});
+  }
   const double seconds_stats = seconds_since(t_stats);
 
-  const frontpack_tool::RenderOptions picture{
-      .width_px = a.width, .histogram = !a.no_histogram, .requested = options.radii, .requested_spec = a.radius};
-  for (const Output& o : outputs) {
-    write_output(o, domain, p.disks, picture);
+  frontpack_tool::PendingOutputs pending;
+  const frontpack_tool::RenderOptions picture{.width_px = a.width,
+                                              .histogram = !a.no_histogram,
+                                              .requested = options.radii,
+                                              .requested_spec = spec,
+                                              .stop = options.stop};
+  for (const auto& o : outputs) {
+    pending.write(o, domain, p.disks, picture, options.stop);
   }
-  const frontpack::Certificate& c = p.certificate;
-  const double seconds_fill = p.stats.seconds_front + p.stats.seconds_cull + p.stats.seconds_overlap;
   if (!a.json.empty()) {
-    Json outs = Json::array();
-    for (const Output& o : outputs) {
-      outs.push_back(Json{{"path", o.path.string()}, {"format", format_name(o.format)}});
+    const Json j = fill_json(a, spec, options, domain, p, s, outputs, seconds_stats, seconds_since(t_start));
+    pending.write_text(a.json, j.dump(2) + "\n");
+  }
+  pending.commit_all(options.stop);
+
+  if (!a.quiet) {
+    const frontpack::Certificate& c = p.certificate;
+    const double seconds_fill = p.stats.seconds_front + p.stats.seconds_cull + p.stats.seconds_overlap;
+    std::cerr << "disks:       " << p.disks.size() << " (" << frontpack::to_string(options.method) << " form, seed "
+              << options.seed << (p.truncated ? ", truncated at --max-disks" : "") << ")\n"
+              << "radius:      " << spec << (a.radius.empty() ? " (the default; set with --radius)" : "") << "\n"
+              << "fraction:    " << frontpack_tool::fraction_line(s) << "\n"
+              << "radii:       " << frontpack_tool::radii_line(s.sizes) << "\n"
+              << "certificate: " << (c.dropped == 0 ? "certified" : "certified after repair") << ": " << c.generated
+              << " generated, " << c.culled << " culled (not inside), " << c.dropped
+              << " dropped (overlap); every decision exact\n"
+              << "time:        " << fmt(seconds_fill) << " s (front " << fmt(p.stats.seconds_front) << ", cull "
+              << fmt(p.stats.seconds_cull) << ", overlap pass " << fmt(p.stats.seconds_overlap) << "), statistics "
+              << fmt(seconds_stats) << " s\n";
+    for (const auto& o : outputs) {
+      std::cerr << "wrote:       " << o.path.string() << " (" << frontpack_tool::format_name(o.format) << ")\n";
     }
-    Json j{{"frontpack_version", frontpack::version_string},
-           {"command", "fill"},
-           {"domain", domain_json(a.src, domain)},
-           {"method", frontpack::to_string(options.method)},
-           {"radius_spec", a.radius},
-           {"radius_distribution", options.radii.describe()},
-           {"seed", a.seed},
-           {"disks", p.disks.size()},
-           {"truncated", p.truncated}};
-    j.update(stats_json(s));
-    j["certificate"] = Json{{"certified", true},
-                            {"generated", c.generated},
-                            {"culled", c.culled},
-                            {"dropped", c.dropped},
-                            {"candidate_pairs", c.candidate_pairs},
-                            {"exact", c.exact}};
-    j["seconds"] = Json{{"front", p.stats.seconds_front},
-                        {"cull", p.stats.seconds_cull},
-                        {"overlap_pass", p.stats.seconds_overlap},
-                        {"statistics", seconds_stats},
-                        {"total", seconds_since(t_start)}};
-    j["outputs"] = outs;
-    write_json(a.json, j);
+    if (!a.json.empty()) {
+      std::cerr << "wrote:       " << a.json << " (summary)\n";
+    }
   }
-  if (a.quiet) {
-    return ok;
-  }
-  std::cerr << "disks:       " << p.disks.size() << " (" << frontpack::to_string(options.method) << " form, seed "
-            << a.seed << (p.truncated ? ", truncated at --max-disks" : "") << ")\n"
-            << "fraction:    " << fraction_line(s) << "\n"
-            << "radii:       " << radii_line(s.sizes) << "\n"
-            << "certificate: " << (c.dropped == 0 ? "certified" : "certified after repair") << ": " << c.generated
-            << " generated, " << c.culled << " culled (not inside), " << c.dropped
-            << " dropped (overlap); every decision exact\n"
-            << "time:        " << fmt(seconds_fill) << " s (front " << fmt(p.stats.seconds_front) << ", cull "
-            << fmt(p.stats.seconds_cull) << ", overlap pass " << fmt(p.stats.seconds_overlap) << "), statistics "
-            << fmt(seconds_stats) << " s\n";
-  for (const Output& o : outputs) {
-    std::cerr << "wrote:       " << o.path.string() << " (" << format_name(o.format) << ")\n";
-  }
-  if (!a.json.empty()) {
-    std::cerr << "wrote:       " << a.json << " (summary)\n";
+  if (p.truncated) {
+    std::cerr << "frontpack: stopped at --max-disks " << options.max_disks << ": the packing written ("
+              << p.disks.size() << (p.disks.size() == 1 ? " disk" : " disks")
+              << ", certified) does not fill the domain\n";
+    return max_disks_reached;
   }
   return ok;
 }
@@ -501,12 +359,10 @@ std::string disk_text(const frontpack::Disk& d) {
 }
 
 int run_check(const CheckArgs& a) {
+  frontpack_tool::check_files({{"DOMAIN", a.domain}, {"DISKS", a.disks}}, output_uses({}, a.json));
   const frontpack::Domain domain = frontpack::Domain::from_wkt_file(a.domain);
   const std::vector<frontpack::Disk> disks = frontpack::read_disks(a.disks);
-  if (!a.json.empty()) {
-    check_writable(a.json);
-  }
-  const frontpack::CertifyReport r = frontpack::certify(domain, disks);
+  const frontpack::CertifyReport r = frontpack::certify(domain, disks, stop_token());
   const bool certified = r.outside.empty() && r.overlapping.empty();
 
   std::ostringstream out;
@@ -543,9 +399,7 @@ int run_check(const CheckArgs& a) {
   out << "result:      "
       << (certified ? "certified: no two disks overlap and every disk lies in the domain" : "NOT certified") << " ("
       << r.certificate.candidate_pairs << " candidate pairs, every decision exact)\n";
-  if (!a.quiet) {
-    std::cout << out.str();
-  }
+  frontpack_tool::PendingOutputs pending;
   if (!a.json.empty()) {
     Json j{{"frontpack_version", frontpack::version_string},
            {"command", "check"},
@@ -565,7 +419,11 @@ int run_check(const CheckArgs& a) {
       j["deepest_overlap"] =
           Json{{"disks", {r.deepest_overlap->first, r.deepest_overlap->second}}, {"depth", r.deepest_overlap_depth}};
     }
-    write_json(a.json, j);
+    pending.write_text(a.json, j.dump(2) + "\n");
+  }
+  pending.commit_all(stop_token());
+  if (!a.quiet) {
+    std::cout << out.str();
   }
   if (!certified) {
     std::cerr << "frontpack: " << a.disks << " is not certified: " << r.overlapping.size() << " overlapping "
@@ -598,15 +456,20 @@ int run_render(const RenderArgs& a) {
     picture.requested = frontpack::parse_radii(a.radius);
     picture.requested_spec = a.radius;
   }
+  const std::vector<frontpack_tool::Output> outputs = frontpack_tool::resolve_outputs(a.outputs, a.format, true);
+  frontpack_tool::check_files({{"DOMAIN", a.domain}, {"DISKS", a.disks}}, output_uses(outputs, {}));
   const frontpack::Domain domain = frontpack::Domain::from_wkt_file(a.domain);
   const std::vector<frontpack::Disk> disks = frontpack::read_disks(a.disks);
-  const std::vector<Output> outputs = resolve_outputs(a.outputs, a.format, true);
-  for (const Output& o : outputs) {
-    write_output(o, domain, disks, picture);
-    if (!a.quiet) {
-      std::cerr << "wrote:       " << o.path.string() << " (" << format_name(o.format) << ", " << a.width << " x "
-                << frontpack_tool::picture_height(domain, a.width, picture.histogram) << ", " << disks.size()
-                << " disks)\n";
+  frontpack_tool::PendingOutputs pending;
+  for (const auto& o : outputs) {
+    pending.write(o, domain, disks, picture, stop_token());
+  }
+  pending.commit_all(stop_token());
+  if (!a.quiet) {
+    for (const auto& o : outputs) {
+      std::cerr << "wrote:       " << o.path.string() << " (" << frontpack_tool::format_name(o.format) << ", "
+                << a.width << " x " << frontpack_tool::picture_height(domain, a.width, picture.histogram) << ", "
+                << disks.size() << " disks)\n";
     }
   }
   return ok;
@@ -620,38 +483,41 @@ struct StatsArgs {
   std::string disks;
   std::string radius;
   std::string json;
-  std::size_t samples = 1'000'000;
+  std::string samples = "1000000";
   bool quiet = false;
 };
 
 int run_stats(const StatsArgs& a) {
-  const frontpack::Domain domain = frontpack::Domain::from_wkt_file(a.domain);
-  const std::vector<frontpack::Disk> disks = frontpack::read_disks(a.disks);
   frontpack::StatsOptions options;
+  std::vector<frontpack_tool::FileUse> inputs{{"DOMAIN", a.domain}, {"DISKS", a.disks}};
   if (!a.radius.empty()) {
     options.requested = frontpack::parse_radii(a.radius);
+    add_curve_input(a.radius, inputs);
   }
-  options.samples = a.samples;
-  if (!a.json.empty()) {
-    check_writable(a.json);
-  }
+  options.samples = parse_count("--samples", a.samples, std::uint64_t{1} << 40);
+  options.stop = stop_token();
+  frontpack_tool::check_files(inputs, output_uses({}, a.json));
+  const frontpack::Domain domain = frontpack::Domain::from_wkt_file(a.domain);
+  const std::vector<frontpack::Disk> disks = frontpack::read_disks(a.disks);
   const frontpack::PackingStats s = frontpack::measure(domain, disks, options);
   if (!a.json.empty()) {
     Json j{{"frontpack_version", frontpack::version_string},
            {"command", "stats"},
-           {"domain", domain_json(DomainSource{a.domain, {}}, domain)},
+           {"domain", frontpack_tool::domain_json(a.domain, domain)},
            {"disk_file", a.disks},
            {"disks", s.disks}};
-    j.update(stats_json(s));
-    write_json(a.json, j);
+    j.update(frontpack_tool::stats_json(s));
+    frontpack_tool::PendingOutputs pending;
+    pending.write_text(a.json, j.dump(2) + "\n");
+    pending.commit_all(options.stop);
   }
   if (a.quiet) {
     return ok;
   }
   std::cout << "disks:        " << s.disks << " in " << a.disks << "\n"
-            << "fraction:     " << fraction_line(s) << "\n"
+            << "fraction:     " << frontpack_tool::fraction_line(s) << "\n"
             << "void ratio:   " << fmt(s.void_ratio) << "\n"
-            << "radii:        " << radii_line(s.sizes) << "\n";
+            << "radii:        " << frontpack_tool::radii_line(s.sizes) << "\n";
   if (s.sizes.compared) {
     std::cout << "requested:    " << s.sizes.requested << "\n"
               << "KS distance:  " << fmt4(s.sizes.ks_number) << " by number, " << fmt4(s.sizes.ks_area) << " by area\n";
@@ -672,6 +538,9 @@ int run_stats(const StatsArgs& a) {
 
 // One exit code per kind of error (see the top of this file).
 int exit_code(const std::exception& e) {
+  if (dynamic_cast<const frontpack_tool::UsageError*>(&e) != nullptr) {
+    return usage;
+  }
   if (dynamic_cast<const frontpack::IoError*>(&e) != nullptr ||
       dynamic_cast<const std::filesystem::filesystem_error*>(&e) != nullptr) {
     return io;
@@ -699,6 +568,8 @@ constexpr const char* kRadiusHelp =
 }  // namespace
 
 int main(int argc, char** argv) {
+  frontpack_tool::SignalWatch signals;  // first: every later thread inherits the blocked signals
+  g_signals = &signals;
   CLI::App app{"frontpack: dense, exactly certified disk packings of polygonal domains", "frontpack"};
   app.set_version_flag("--version", std::string(frontpack::version_string));
   app.require_subcommand(1);
@@ -718,9 +589,11 @@ int main(int argc, char** argv) {
   fill->add_option("--method", fill_args.method,
                    "closed (Sec. 2), open (Sec. 3) or boundary (the domain's edges as walls)")
       ->capture_default_str();
-  fill->add_option("--radius", fill_args.radius, kRadiusHelp)->capture_default_str();
-  fill->add_option("--seed", fill_args.seed, "64-bit seed (same seed, same packing)")->capture_default_str();
-  fill->add_option("--max-disks", fill_args.max_disks, "refuse or stop runs beyond this many disks")
+  fill->add_option("--radius", fill_args.radius, std::string(kRadiusHelp) + " (default " + kDefaultRadius + ")");
+  fill->add_option("--seed", fill_args.seed, "64-bit seed, 0 to 18446744073709551615 (same seed, same packing)")
+      ->capture_default_str();
+  fill->add_option("--max-disks", fill_args.max_disks,
+                   "refuse runs estimated beyond this many disks, and stop a run that reaches it (exit 9)")
       ->capture_default_str();
   fill->add_option("-o,--output", fill_args.outputs,
                    "output file, any number; format by extension: .csv, .txt/.yade (Yade), .data/.lmp (LAMMPS), "
@@ -738,8 +611,8 @@ int main(int argc, char** argv) {
       "  frontpack fill shapes/plate_with_holes.wkt --radius uniform:0.005,0.02 --seed 7 \\\n"
       "      -o packing.csv -o packing.data -o packing.png --json summary.json\n"
       "Prints a summary on stderr (disks, packing fraction overall and interior, radii, certificate, time);\n"
-      "on a terminal, runs longer than half a second show a progress bar. Ctrl-C stops the run (exit 130,\n"
-      "nothing written).");
+      "on a terminal, runs longer than half a second show a progress bar. Ctrl-C (or SIGTERM) stops the\n"
+      "run within a second (exit 130 or 143) and leaves every output file as it was.");
 
   CheckArgs check_args;
   auto* check = app.add_subcommand("check", "Certify any packing exactly: no overlap, every disk inside");
@@ -816,6 +689,10 @@ int main(int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     std::cerr << "frontpack: " << e.what() << "\n";
     return usage;
+  } catch (const frontpack::CancelledError&) {
+    std::cerr << "\nfrontpack: interrupted by " << frontpack_tool::signal_name(signals.signal())
+              << "; no output written\n";
+    return signals.exit_code();
   } catch (const std::exception& e) {
     const int code = exit_code(e);
     std::cerr << "frontpack: " << (code == internal ? "internal error: " : "") << e.what() << "\n";

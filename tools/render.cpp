@@ -12,11 +12,11 @@
 #include <cstdio>
 #include <memory>
 #include <numbers>
+#include <ostream>
 #include <string>
 #include <string_view>
 #include <vector>
 
-#include "atomic_file.hpp"
 #include "frontpack/fill.hpp"  // OptionError
 #include "frontpack/stats.hpp"
 
@@ -56,7 +56,7 @@ Rgb viridis(double t) {
 // root element's start tag: Cairo writes text as glyph outlines, so without it the caption would
 // not be in the file as text.
 struct Sink {
-  std::FILE* file = nullptr;
+  std::ostream* out = nullptr;
   std::string insert;
   std::size_t matched = 0;  // characters of "<svg" matched so far
   bool in_root_tag = false;
@@ -64,7 +64,9 @@ struct Sink {
 
 cairo_status_t write_to_file(void* closure, const unsigned char* data, unsigned int length) {
   Sink& sink = *static_cast<Sink*>(closure);
-  const auto put = [&](const void* bytes, std::size_t n) { return std::fwrite(bytes, 1, n, sink.file) == n; };
+  const auto put = [&](const void* bytes, std::size_t n) {
+    return static_cast<bool>(sink.out->write(static_cast<const char*>(bytes), static_cast<std::streamsize>(n)));
+  };
   std::size_t from = 0;
   if (!sink.insert.empty()) {
     static constexpr std::string_view kRoot = "<svg";
@@ -580,8 +582,9 @@ int picture_height(const frontpack::Domain& domain, int width_px, bool histogram
   return packing_height(domain, width_px) + (histogram ? histogram_height(width_px) : 0);
 }
 
-void render(const std::filesystem::path& path, Picture format, const frontpack::Domain& domain,
+void render(frontpack::OutputFile& out, Picture format, const frontpack::Domain& domain,
             std::span<const frontpack::Disk> disks, const RenderOptions& options) {
+  const std::filesystem::path& path = out.path();
   const int width = options.width_px;
   if (width < 16 || width > 16384) {
     throw frontpack::OptionError(std::string("--width ") + std::to_string(width) + ": expected 16 to 16384 pixels");
@@ -607,9 +610,8 @@ void render(const std::filesystem::path& path, Picture format, const frontpack::
     }
   }
 
-  AtomicFile out(path);
   Sink sink;
-  sink.file = out.file();
+  sink.out = &out.stream();
   Surface surface;
   if (format == Picture::png) {
     surface.reset(cairo_image_surface_create(CAIRO_FORMAT_RGB24, width, height));
@@ -628,6 +630,9 @@ void render(const std::filesystem::path& path, Picture format, const frontpack::
   {
     const Context cr(cairo_create(surface.get()));
     draw(cr.get(), view, format, domain, disks, width);
+    if (options.stop.stop_requested()) {
+      throw frontpack::CancelledError();
+    }
     if (histogram) {
       draw_panel(cr.get(), *histogram, ColourScale(disks), view.height, width);
     }
@@ -639,7 +644,6 @@ void render(const std::filesystem::path& path, Picture format, const frontpack::
   cairo_surface_finish(surface.get());
   check(cairo_surface_status(surface.get()), path);
   surface.reset();
-  out.commit();
 }
 
 }  // namespace frontpack_tool

@@ -5,10 +5,12 @@
 #include <filesystem>
 #include <optional>
 #include <span>
+#include <stop_token>
 #include <string>
 
 #include "frontpack/domain.hpp"
 #include "frontpack/geometry.hpp"
+#include "frontpack/output_file.hpp"
 #include "frontpack/sizes.hpp"
 
 namespace frontpack_tool {
@@ -29,6 +31,8 @@ struct RenderOptions {
   std::optional<frontpack::Radii> requested;
   /// How the request was written (the --radius spec), for the panel's caption.
   std::string requested_spec;
+  /// Once a stop is requested, render() throws frontpack::CancelledError.
+  std::stop_token stop{};
 };
 
 /// Height of the size-distribution panel for a picture width: width / 4 + 6 font sizes, the font
@@ -48,9 +52,10 @@ struct RenderOptions {
 /// distribution's share of the area per bin as a line, and a caption with the KS distance by area.
 /// Text is drawn with Cairo's toy font API (fontconfig's "sans-serif"; without fonts, boxes).
 /// SVG files get the caption as the root's <title> (Cairo writes text as glyph outlines), PDF
-/// files as their subject. Writes to `path` atomically. Throws frontpack::OptionError for a width
-/// out of [16, 16384] or a picture taller than 32767 px, frontpack::IoError if it cannot be written.
-void render(const std::filesystem::path& path, Picture format, const frontpack::Domain& domain,
+/// files as their subject. Writes to `out` (its commit() is the caller's). Throws
+/// frontpack::OptionError for a width out of [16, 16384] or a picture taller than 32767 px,
+/// frontpack::IoError if it cannot be written.
+void render(frontpack::OutputFile& out, Picture format, const frontpack::Domain& domain,
             std::span<const frontpack::Disk> disks, const RenderOptions& options = {});
 
 }  // namespace frontpack_tool

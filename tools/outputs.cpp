@@ -1,0 +1,201 @@
+#include "outputs.hpp"
+
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cstring>
+#include <memory>
+#include <unordered_set>
+
+#include "frontpack/errors.hpp"
+
+namespace frontpack_tool {
+
+namespace {
+
+// The process-wide output lock and the batches not yet destroyed (see PendingOutputs).
+std::mutex& output_lock() {
+  static std::mutex m;
+  return m;
+}
+
+std::vector<PendingOutputs*>& live_batches() {
+  static std::vector<PendingOutputs*> batches;
+  return batches;
+}
+
+}  // namespace
+
+std::string format_name(const OutputFormat& f) {
+  if (const auto* picture = std::get_if<Picture>(&f)) {
+    return *picture == Picture::png ? "png" : *picture == Picture::svg ? "svg" : "pdf";
+  }
+  return frontpack::to_string(std::get<frontpack::Format>(f));
+}
+
+namespace {
+
+// --format NAME (for every output) or the extension. Pictures (png, svg, pdf) are drawn by the
+// tool's renderer, so that fill and render draw the same picture.
+OutputFormat resolve_format(const std::filesystem::path& path, const std::string& name, bool pictures_only) {
+  const std::string known = pictures_only ? "png, svg or pdf" : "csv, yade, lammps, vtp, png, svg or pdf";
+  if (!name.empty()) {
+    if (const auto picture = picture_from_name(name)) {
+      return *picture;
+    }
+    if (!pictures_only) {
+      try {
+        return frontpack::format_from_name(name);
+      } catch (const frontpack::OptionError&) {
+      }
+    }
+    throw frontpack::OptionError(std::string("--format ") + name + ": unknown format; expected " + known);
+  }
+  if (const auto picture = picture_from_path(path)) {
+    return *picture;
+  }
+  if (pictures_only) {
+    throw frontpack::OptionError(std::string("-o ") + path.string() + ": unknown picture format '" +
+                                 path.extension().string() + "'; use .png, .svg or .pdf (or --format)");
+  }
+  try {
+    return frontpack::format_from_path(path);
+  } catch (const frontpack::OptionError&) {
+    // The library's message lists only its own formats; name the tool's pictures too.
+    const std::string ext = path.extension().string();
+    std::string message("-o ");
+    message.append(path.string());
+    message.append(ext.empty() ? std::string(": no file extension to tell the format by")
+                               : std::string(": unknown format '") + ext + "'");
+    message.append(
+        "; use .csv, .txt or .yade (Yade), .data or .lmp (LAMMPS), .vtp (ParaView), .png, .svg or .pdf, "
+        "or --format NAME");
+    throw frontpack::OptionError(message);
+  }
+}
+
+// Fails early (before a long run) when an output's directory does not take a new file.
+void check_writable(const std::filesystem::path& path) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) {
+    throw frontpack::IoError(std::string("cannot write '") + path.string() + "': it is a directory", path.string());
+  }
+  if (std::filesystem::exists(path, ec) && !std::filesystem::is_regular_file(path, ec)) {
+    return;  // a device or FIFO: written through, whatever its directory allows
+  }
+  std::filesystem::path dir = std::filesystem::path(path).parent_path();
+  if (dir.empty()) {
+    dir = ".";
+  }
+  if (::access(dir.c_str(), W_OK) != 0) {
+    const int err = errno;
+    throw frontpack::IoError(std::string("cannot write '") + path.string() + "': " + std::strerror(err), path.string());
+  }
+}
+
+}  // namespace
+
+std::vector<Output> resolve_outputs(const std::vector<std::string>& paths, const std::string& format,
+                                    bool pictures_only) {
+  std::vector<Output> out;
+  for (const std::string& p : paths) {
+    out.push_back({p, resolve_format(p, format, pictures_only)});
+  }
+  return out;
+}
+
+void check_files(const std::vector<FileUse>& inputs, const std::vector<FileUse>& outputs) {
+  for (std::size_t i = 0; i < outputs.size(); ++i) {
+    for (const FileUse& in : inputs) {
+      if (frontpack::same_regular_file(in.path, outputs[i].path)) {
+        throw UsageError("'" + outputs[i].path.string() + "' is given as the output " + outputs[i].use +
+                         " and is the input " + in.use + " ('" + in.path.string() +
+                         "'): writing it would destroy the input; choose another output file");
+      }
+    }
+    for (std::size_t j = 0; j < i; ++j) {
+      if (frontpack::same_regular_file(outputs[j].path, outputs[i].path)) {
+        throw UsageError("'" + outputs[i].path.string() + "' is given as two outputs, " + outputs[j].use + " '" +
+                         outputs[j].path.string() + "' and " + outputs[i].use +
+                         ": one would overwrite the other; choose another file for one of them");
+      }
+    }
+  }
+  for (const FileUse& o : outputs) {
+    check_writable(o.path);
+  }
+}
+
+PendingOutputs::~PendingOutputs() {
+  const std::lock_guard<std::mutex> lock(output_lock());
+  files_.clear();  // each OutputFile removes its temporary file unless committed
+  auto& batches = live_batches();
+  batches.erase(std::remove(batches.begin(), batches.end(), this), batches.end());
+}
+
+frontpack::OutputFile& PendingOutputs::open(const std::filesystem::path& path) {
+  // Opening a FIFO waits for its reader: outside the lock, so that the signal watcher can still
+  // take it (a FIFO has no temporary file to register). Everything else is created and registered
+  // under the lock, so that no temporary file exists unregistered.
+  struct stat st {};
+  std::unique_ptr<frontpack::OutputFile> fifo;
+  if (::stat(path.c_str(), &st) == 0 && S_ISFIFO(st.st_mode)) {
+    fifo = std::make_unique<frontpack::OutputFile>(path);
+  }
+  const std::lock_guard<std::mutex> lock(output_lock());
+  auto& batches = live_batches();
+  if (std::find(batches.begin(), batches.end(), this) == batches.end()) {
+    batches.push_back(this);
+  }
+  files_.push_back(fifo ? std::move(fifo) : std::make_unique<frontpack::OutputFile>(path));
+  return *files_.back();
+}
+
+void PendingOutputs::write(const Output& output, const frontpack::Domain& domain,
+                           std::span<const frontpack::Disk> disks, const RenderOptions& picture, std::stop_token stop) {
+  frontpack::OutputFile& file = open(output.path);
+  if (const auto* format = std::get_if<Picture>(&output.format)) {
+    RenderOptions options = picture;
+    options.stop = std::move(stop);
+    render(file, *format, domain, disks, options);
+  } else {
+    frontpack::WriteOptions options;
+    options.svg.width_px = picture.width_px;
+    options.stop = std::move(stop);
+    frontpack::write(file.stream(), std::get<frontpack::Format>(output.format), domain, disks, options);
+  }
+}
+
+void PendingOutputs::write_text(const std::filesystem::path& path, const std::string& text) {
+  frontpack::OutputFile& file = open(path);
+  file.stream().write(text.data(), static_cast<std::streamsize>(text.size()));
+}
+
+void PendingOutputs::commit_all(const std::stop_token& stop) {
+  const std::lock_guard<std::mutex> lock(output_lock());
+  if (stop.stop_requested()) {
+    throw frontpack::CancelledError();
+  }
+  for (const auto& file : files_) {
+    committed_ = true;
+    file->commit();
+  }
+}
+
+bool PendingOutputs::remove_temporaries_now() noexcept {
+  output_lock().lock();  // held until the process exits: no commit may start
+  bool committed = false;
+  for (PendingOutputs* batch : live_batches()) {
+    committed = committed || batch->committed_;
+    for (const auto& file : batch->files_) {
+      if (!file->temporary().empty()) {
+        ::unlink(file->temporary().c_str());
+      }
+    }
+  }
+  return committed;
+}
+
+}  // namespace frontpack_tool

@@ -1,0 +1,136 @@
+#include "report.hpp"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+namespace frontpack_tool {
+
+double seconds_since(Clock::time_point t0) {
+  return std::chrono::duration<double>(Clock::now() - t0).count();
+}
+
+std::string fmt(double v) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.10g", v);
+  return buf;
+}
+
+std::string fmt4(double v) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.4f", v);
+  return buf;
+}
+
+Json domain_json(const std::string& source, const frontpack::Domain& domain) {
+  return Json{{"source", source},
+              {"area", domain.area()},
+              {"polygons", domain.num_polygons()},
+              {"holes", domain.num_holes()},
+              {"vertices", domain.num_vertices()}};
+}
+
+namespace {
+
+Json sizes_json(const frontpack::SizeStats& s) {
+  Json j{{"count", s.count},
+         {"min", s.rmin},
+         {"max", s.rmax},
+         {"mean", s.mean},
+         {"sd", s.sd},
+         {"median_by_number", s.median_number},
+         {"median_by_area", s.median_area}};
+  if (s.compared) {
+    j["requested"] = s.requested;
+    j["ks_by_number"] = s.ks_number;
+    j["ks_by_area"] = s.ks_area;
+  }
+  return j;
+}
+
+}  // namespace
+
+Json stats_json(const frontpack::PackingStats& s) {
+  return Json{{"packing_fraction", s.packing_fraction},
+              {"interior_fraction", s.interior_fraction},
+              {"interior_fraction_error", s.interior_error},
+              {"band_fraction", s.band_fraction},
+              {"band_fraction_error", s.band_error},
+              {"band_width", s.band_width},
+              {"void_ratio", std::isfinite(s.void_ratio) ? Json(s.void_ratio) : Json(nullptr)},
+              {"mean_coordination", s.mean_coordination},
+              {"interior_coordination", s.interior_coordination},
+              {"contacts", s.contacts},
+              {"wall_contacts", s.wall_contacts},
+              {"rattlers", s.rattlers},
+              {"contact_gap", s.contact_gap},
+              {"band_disks", s.band_disks},
+              {"band_median_by_area", s.band_median_area},
+              {"inside_median_by_area", s.inside_median_area},
+              {"segregation_ks_by_area", s.segregation_ks_area},
+              {"radius", sizes_json(s.sizes)}};
+}
+
+std::string fraction_line(const frontpack::PackingStats& s) {
+  std::string line = fmt4(s.packing_fraction);
+  line.append(" overall");
+  if (s.interior_samples > 0) {
+    line.append(", ").append(fmt4(s.interior_fraction)).append(" interior (+/- ").append(fmt4(s.interior_error));
+    line.append(", farther than ").append(fmt(s.band_width)).append(" from the boundary)");
+  }
+  if (s.band_samples > 0) {
+    line.append(", ").append(fmt4(s.band_fraction)).append(" in the band");
+  }
+  return line;
+}
+
+std::string radii_line(const frontpack::SizeStats& s) {
+  if (s.count == 0) {
+    return "none";
+  }
+  return std::string("min ") + fmt(s.rmin) + ", mean " + fmt(s.mean) + ", max " + fmt(s.rmax) + ", sd " + fmt(s.sd) +
+         ", median by area " + fmt(s.median_area);
+}
+
+ProgressBar::ProgressBar(bool enabled) : enabled_(enabled && ::isatty(STDERR_FILENO) == 1) {}
+
+void ProgressBar::update(const frontpack::Progress& p) {
+  if (!enabled_) {
+    return;
+  }
+  const double t = seconds_since(start_);
+  if (t < 0.5 || (shown_ && t - last_ < 0.1 && p.fraction < 1.0)) {
+    return;
+  }
+  last_ = t;
+  shown_ = true;
+  constexpr int kWidth = 30;
+  const double f = std::clamp(p.fraction, 0.0, 1.0);
+  const int filled = static_cast<int>(f * kWidth);
+  std::string line("\r[");
+  line.append(static_cast<std::size_t>(filled), '#').append(static_cast<std::size_t>(kWidth - filled), '.');
+  char tail[160];
+  const double rate = static_cast<double>(p.disks) / t;
+  const double eta = f > 0.01 ? t * (1 - f) / f : NAN;
+  if (std::isfinite(eta)) {
+    std::snprintf(tail, sizeof tail, "] %3.0f%% of area  %zu disks  %.3g disks/s  ETA %.0f s", 100 * f, p.disks, rate,
+                  eta);
+  } else {
+    std::snprintf(tail, sizeof tail, "] %3.0f%% of area  %zu disks  %.3g disks/s", 100 * f, p.disks, rate);
+  }
+  line.append(tail).append("\033[K");
+  std::fputs(line.c_str(), stderr);
+  std::fflush(stderr);
+}
+
+void ProgressBar::clear() {
+  if (shown_) {
+    std::fputs("\r\033[K", stderr);
+    std::fflush(stderr);
+    shown_ = false;
+  }
+}
+
+}  // namespace frontpack_tool

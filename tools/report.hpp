@@ -1,0 +1,49 @@
+// What the tool prints and writes as JSON about domains, packings and statistics, and the
+// progress bar of long runs.
+#pragma once
+
+#include <chrono>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "frontpack/domain.hpp"
+#include "frontpack/fill.hpp"
+#include "frontpack/stats.hpp"
+
+namespace frontpack_tool {
+
+using Json = nlohmann::ordered_json;
+using Clock = std::chrono::steady_clock;
+
+[[nodiscard]] double seconds_since(Clock::time_point t0);
+/// 10 significant digits.
+[[nodiscard]] std::string fmt(double v);
+/// 4 decimals.
+[[nodiscard]] std::string fmt4(double v);
+
+[[nodiscard]] Json domain_json(const std::string& source, const frontpack::Domain& domain);
+[[nodiscard]] Json stats_json(const frontpack::PackingStats& s);
+/// "0.8123 overall, 0.8300 interior (+/- 0.0010, farther than 0.1 from the boundary), ..."
+[[nodiscard]] std::string fraction_line(const frontpack::PackingStats& s);
+/// "min 0.01, mean 0.03, max 0.05, sd ..., median by area ..."
+[[nodiscard]] std::string radii_line(const frontpack::SizeStats& s);
+
+/// On a terminal only, after half a second: "[#####.....]  42% of area  123456 disks  1.2e+06 disks/s  ETA 3 s".
+class ProgressBar {
+ public:
+  explicit ProgressBar(bool enabled);
+  ProgressBar(const ProgressBar&) = delete;
+  ProgressBar& operator=(const ProgressBar&) = delete;
+  ~ProgressBar() { clear(); }
+
+  void update(const frontpack::Progress& p);
+  void clear();
+
+ private:
+  bool enabled_;
+  bool shown_ = false;
+  double last_ = 0;
+  Clock::time_point start_ = Clock::now();
+};
+
+}  // namespace frontpack_tool
