@@ -1,64 +1,11 @@
-// The boundary-conforming advancing front (boundary.hpp).
-//
-// Elements. A new disk is always placed tangent to two elements: placed disks, walls (the polygon's
-// edges, the open form's infinite-radius disks generalised to segments) and reflex vertices
-// (zero-radius obstacles at the corners where the domain turns away). Element ids: a node (disk or
-// reflex vertex) is >= 0, wall e is -(e + 1).
-//
-// Gaps. The front is kept as its segments alone, without the list that links them: a gap (a, b)
-// says "a disk may touch a and b, on the left of a -> b", the left being the free side (every ring
-// of a normalised polygon has the domain on its left). The initial gaps are the corners of every
-// ring: (e_in, e_out) at a convex corner, (e_in, v) and (v, e_out) at a reflex vertex v, where the
-// boundary turns by at least kSlideTurn (20 degrees). A vertex where it turns less is no corner but
-// a bend in a wall: a disk touching a wall whose foot falls past the wall's end slides onto the
-// next wall across such bends (slide()), so that a curve divided into many short edges gets one
-// wall layer along it, not one start per vertex (a ring without a corner starts at its sharpest
-// vertex). A disk n placed in gap (a, b) replaces it with (a, n) and (n, b), exactly as the paper's
-// front replaces segment a -> b by a -> n -> b. Gaps are taken first in, first out, so the front
-// moves inwards layer by layer from every ring at once, and fronts that meet need no merging. At a
-// wall or a reflex vertex, a candidate that overlaps an element d is moved to touch d and one of
-// its parents instead (the paper's cases (b)-(d), decided by geometry instead of list order), up
-// to three times; in the interior it is not moved (unless d is a wall or a reflex vertex: once),
-// and where the other front left too little room the gap becomes a void (below), which the radii
-// that fit there close with tangent disks. A gap whose first disk has since been paired with
-// another second element, or its second disk with another first one, has been overtaken
-// (overtaker()): it is kept as a void instead of being tried.
-//
-// Voids. A gap where the drawn disk does not fit is not thrown away: it is kept in a bucket by the
-// most it can take (log-spaced radius classes between rmin and rmax): the radius that failed there,
-// or less, the radius of the pocket between its two elements and the element in the way (pocket():
-// Apollonius' problem for three disks, two disks and a wall, or a disk and two walls). Away from
-// the walls the element in the way is the first found among the disks most often there (the
-// gap's front neighbours and the disks of the candidate's cell: in_the_way()), and the grid is
-// scanned only when none of them is, for the deepest element or for none. A disk placed in a
-// void away from the boundary, touching the void's own two elements, splits it: the two pockets
-// between the new disk, one of its parents and the void's bounding element are kept as voids the
-// same way, not queued on the front, unless that element bounds no pocket there or leaves it
-// room for rmax. Also kept: the cusp between a new disk, a wall it touches
-// and its other parent, and the pocket on the far side of two disk parents that a move brought
-// together (if less than 4 rmin apart, worth_a_void(); bounded by the parent the move replaced).
-// Each new radius is tried first in the voids, those on a rough wall first, in the tightest class
-// whose radii all exceed it, then on the front. A rough wall is an edge shorter than 2 rmax that
-// meets a corner: the crevices of a boundary rough at the scale of the disks take only the small
-// ones, and without the priority these would go to the more recent voids inside and leave the band
-// sparse. (On smooth walls the priority overfills the band with small disks: it is then denser than
-// the interior, and the interior sparser.) Every drawn radius is placed where it fits, so the size
-// distribution is the requested one; the run ends when the front is done and no void can take the
-// radius drawn. A void that fails again moves to a smaller class; one that can take nothing (the
-// lowest class, or elements too far apart for the radius that failed, so for every smaller one) is
-// dropped, so every gap is tried a bounded number of times and the run ends.
-//
-// Order. Gaps on a wall or a reflex vertex are taken before the others, so the first layer along
-// every wall is laid (from every corner) before the interior fronts arrive; without that, fronts
-// grown from holes reach a long wall first and leave it ragged.
-//
-// Containment. A candidate touching a placed disk lies inside the domain when it crosses no wall:
-// the two disks cover the segment between their centres. A candidate touching only walls and
-// vertices is checked directly: its foot on a wall must lie on the edge, it must not lie in the
-// outside wedge of a reflex vertex, and its centre must be inside the polygon (where the domain is
-// thinner than the clearance, a spike whose two edges are a few ulps apart, it could otherwise
-// touch one edge from within and lie wholly beyond the other). Walls are tested in floating point
-// with half the clearance to spare; the certifier decides containment exactly.
+// The boundary-conforming advancing front (boundary.hpp): the open form's walls (Sec. 3)
+// generalised to every edge of every ring, with reflex vertices as zero-radius obstacles; the
+// front, kept as unlinked gaps, starts at the corners of every ring and advances inwards; cases
+// (b)-(d) of Sec. 2.2 are decided by geometry (a move to touch the element in the way); the voids
+// the front leaves (Sec. 2.2's holes) take later, smaller disks, bucketed by the Apollonius
+// pocket each can hold. Element ids: a node (disk or reflex vertex) is >= 0, wall e is -(e + 1).
+// The method, what it guarantees and where it deviates from the paper, and why:
+// docs/boundary-method.md. Its density: docs/density.md; its cost: docs/performance.md.
 #include "boundary.hpp"
 
 #include <algorithm>
@@ -92,7 +39,7 @@ constexpr std::size_t kMaskWords = (kClasses + 63) / 64;  // words of a void mas
 // and one of its parents). None for a front gap or a void in the interior: there a move places
 // few of the disks it tries, and the radii it would have placed find the voids instead (moves
 // cost the interior 0.01 of packing fraction on every shape: 0.842-0.852 with one move per front
-// gap, 0.849-0.864 without, at 2026-11-23). One, though, where the element in the way is a wall or
+// gap, 0.849-0.864 without). One, though, where the element in the way is a wall or
 // a reflex vertex (kWallCut): the moved disk then touches the boundary, and a smooth curve's band
 // stays as dense as its interior (without it a 100,000-vertex circle's band packed 0.66 against
 // 0.84 inside). Gaps on a wall or a reflex vertex get three, and so do voids there: with one per
@@ -1351,7 +1298,7 @@ class BoundaryFront {
   // Whether the pocket behind parents x and y (disks or reflex vertices) that a move (cases
   // (b)-(d)) brought together is worth keeping as a void. Behind them lies the element the move
   // replaced; their pocket rarely takes a disk, and beyond 4 rmin almost never: on the 3 x 3
-  // square such voids were tried 178k times for 3k disks (1 in 67k beyond 8 rmin, at ecf6dd9).
+  // square such voids were tried 178k times for 3k disks (1 in 67k beyond 8 rmin).
   [[nodiscard]] bool worth_a_void(std::int32_t x, std::int32_t y) const noexcept {
     const Node& a = nodes_[static_cast<std::size_t>(x)];
     const Node& b = nodes_[static_cast<std::size_t>(y)];
