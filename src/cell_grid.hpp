@@ -95,7 +95,7 @@ inline constexpr std::size_t kGatherCells = 32;
 /// visited, so that their loads overlap; walked one cell after another, each chain waited for the
 /// one before (a scan is longer than the processor looks ahead). Empty cells prefetch an address
 /// computed from `none` in integer arithmetic (a prefetch never faults): a branch or a select
-/// there cost the gain. Measurements in docs/performance.md (sixth session).
+/// there cost the gain. Measurements in docs/performance.md.
 template <class Node, class Visit>
 [[gnu::always_inline]] inline bool visit_cells(const std::int32_t* heads, std::size_t nx, const Node* nodes,
                                                std::int32_t none, std::int64_t c0, std::int64_t c1, std::int64_t r0,

@@ -75,10 +75,10 @@ CGAL::Comparison_result compare_centre_distance(Point c1, Point c2, double r1, d
   // at most 16 subnormal units (2^-1070) of absolute error if products underflow. Outside
   // max(8u (d2 + s2), 2^-1000) the sign is certain (where 3u (d2 + s2) < 2^-1070, d2 + s2 is below
   // 2^-1017 and the error below 2^-1066); inside it, or on overflow, intervals and then exact
-  // arithmetic decide. The floor is a normal number: the bound used to add 16 * denorm_min(),
-  // which GCC (with CGAL's -frounding-math) converted from an x87 constant at run time, and the
-  // store of that subnormal cost Intel processors a microcode assist on every pair (a third of
-  // the boundary method's pipeline on a Xeon; no profile on an AMD EPYC showed it).
+  // arithmetic decide. The floor is a normal number, not 16 * denorm_min(): GCC (with CGAL's
+  // -frounding-math) converts that from an x87 constant at run time, and storing the subnormal
+  // costs Intel processors a microcode assist on every pair (measured: a third of the boundary
+  // method's pipeline on a Xeon; docs/design-notes.md).
   {
     const double dx = c1.x - c2.x;
     const double dy = c1.y - c2.y;
