@@ -107,6 +107,80 @@ void BM_ValidateStar(benchmark::State& state) {
 }
 BENCHMARK(BM_ValidateStar)->Arg(50'000)->Arg(200'000)->Unit(benchmark::kMillisecond);
 
+// The unit square with lower left corner (x, y).
+fp::Ring unit_square(double x, double y) {
+  return {{x, y}, {x + 1, y}, {x + 1, y + 1}, {x, y + 1}};
+}
+
+// A checkerboard of n x n / 2 unit squares as a multipolygon (n = 128: 8,192 parts, 32,768
+// vertices): neighbouring parts touch at corners, so every vertex is a touch point. Ray parity
+// per ring made this quadratic (174 s at n = 128); the nesting sweep (ring_tree.cpp) decides it.
+void BM_ValidateCheckerboard(benchmark::State& state) {
+  const auto n = static_cast<int>(state.range(0));
+  std::vector<fp::Polygon> parts;
+  for (int j = 0; j < n; ++j) {
+    for (int i = 0; i < n; ++i) {
+      if ((i + j) % 2 == 0) {
+        parts.push_back({unit_square(i, j), {}});
+      }
+    }
+  }
+  for (auto _ : state) {
+    fp::Domain d = fp::Domain::from_polygons(parts);
+    benchmark::DoNotOptimize(d);
+  }
+  state.counters["parts"] = static_cast<double>(parts.size());
+  state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(4 * parts.size()));
+}
+BENCHMARK(BM_ValidateCheckerboard)->Arg(128)->Unit(benchmark::kMillisecond);
+
+// One polygon: a frame around an n x n board whose squares are holes where keep(i, j) holds.
+template <class Keep>
+std::vector<fp::Polygon> board_of_holes(int n, Keep keep) {
+  fp::Polygon p{{{-1, -1}, {n + 1.0, -1}, {n + 1.0, n + 1.0}, {-1, n + 1.0}}, {}};
+  for (int j = 0; j < n; ++j) {
+    for (int i = 0; i < n; ++i) {
+      if (keep(i, j)) {
+        p.holes.push_back(unit_square(i, j));
+      }
+    }
+  }
+  return {p};
+}
+
+// Holes along every third diagonal of the board, touching their diagonal neighbours at corners:
+// chains of touching holes, valid (n = 128: 5,462 holes).
+void BM_ValidateTouchingHoles(benchmark::State& state) {
+  const auto n = static_cast<int>(state.range(0));
+  const std::vector<fp::Polygon> polygon = board_of_holes(n, [](int i, int j) { return ((j - i) % 3 + 3) % 3 == 0; });
+  for (auto _ : state) {
+    fp::Domain d = fp::Domain::from_polygons(polygon);
+    benchmark::DoNotOptimize(d);
+  }
+  state.counters["holes"] = static_cast<double>(polygon[0].holes.size());
+  state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(4 * polygon[0].holes.size()));
+}
+BENCHMARK(BM_ValidateTouchingHoles)->Arg(128)->Unit(benchmark::kMillisecond);
+
+// Holes on one colour of the board (n = 128: 8,192 holes): every square of the other colour is
+// cut off by the four holes around it, and validation must say so (disconnected_interior).
+void BM_RejectCheckerboardOfHoles(benchmark::State& state) {
+  const auto n = static_cast<int>(state.range(0));
+  const std::vector<fp::Polygon> polygon = board_of_holes(n, [](int i, int j) { return (i + j) % 2 == 0; });
+  for (auto _ : state) {
+    try {
+      fp::Domain d = fp::Domain::from_polygons(polygon);
+      benchmark::DoNotOptimize(d);
+      state.SkipWithError("the checkerboard of holes was accepted");
+      break;
+    } catch (const fp::InvalidDomainError& e) {
+      benchmark::DoNotOptimize(e.kind());
+    }
+  }
+  state.counters["holes"] = static_cast<double>(polygon[0].holes.size());
+}
+BENCHMARK(BM_RejectCheckerboardOfHoles)->Arg(128)->Unit(benchmark::kMillisecond);
+
 void BM_ContainsBatch(benchmark::State& state) {
   const fp::Domain d = fp::Domain::from_wkt(big_polygon_wkt(static_cast<std::size_t>(state.range(0)), 16));
   const std::vector<fp::Disk> disks = disks_over(d.bbox(), static_cast<std::size_t>(state.range(1)));

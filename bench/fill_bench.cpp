@@ -6,6 +6,7 @@
 //   build/release/bench/frontpack_bench_fill --benchmark_filter=Pipeline/10/2/   (boundary)
 //   build/release/bench/frontpack_bench_fill --benchmark_filter=Pipeline/100/   (100M disks, 5.4 GB)
 //   build/release/bench/frontpack_bench_fill --benchmark_filter=CostRatio/      (issue #5's cost ratio)
+//   build/release/bench/frontpack_bench_fill --benchmark_filter=Sliver/         (a 1:1e6 rectangle)
 // "Core" times the advancing front alone (FillStats::seconds_front, manual time); "Pipeline"
 // times fill() end to end: generation + exact cull + CGAL overlap pass. The last argument is
 // FillOptions::fill_voids: issue #3's figures are the paper's forms (0); issue #5's compare the
@@ -15,6 +16,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <iterator>
 #include <numbers>
 #include <string>
@@ -247,6 +249,41 @@ void BM_CostRatio(benchmark::State& state) {
 }
 BENCHMARK(BM_CostRatio)
     ->DenseRange(0, static_cast<int>(std::size(kShapes)) - 1)
+    ->UseManualTime()
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(1);
+
+// A sliver: the rectangle L x 1e-6 (L = 1: 1:1e6), radii uniform in [2e-7, 4.5e-7], so that one
+// to two disks fit across it. The closed form's box is thin: its front becomes two long inactive
+// strands outside the box joined by two short active ends, and looking up the list of active
+// segments walked a strand whenever an end lost its last listed segment (front.cpp, relist()):
+// 182 s for L = 1, now about 2 s; the time must grow linearly with L. Manual time: the front.
+// Arguments: method, L in thousandths.
+//   build/release/bench/frontpack_bench_fill --benchmark_filter=Sliver/
+void BM_Sliver(benchmark::State& state) {
+  const auto method = static_cast<fp::Method>(state.range(0));
+  char text[32];
+  std::snprintf(text, sizeof text, "%g", static_cast<double>(state.range(1)) / 1000);
+  const std::string length = text;
+  const fp::Domain d = fp::Domain::from_wkt("POLYGON((0 0," + length + " 0," + length + " 1e-6,0 1e-6,0 0))");
+  fp::FillOptions o = options(method, method == fp::Method::boundary);
+  o.radii = fp::Radii::uniform(2e-7, 4.5e-7);
+  o.seed = 1;
+  fp::Packing p;
+  for (auto _ : state) {
+    p = fp::fill(d, o);
+    state.SetIterationTime(p.stats.seconds_front);
+  }
+  report(state, p, d);
+  state.counters["generated"] = static_cast<double>(p.certificate.generated);
+  state.counters["per_generated_us"] = 1e6 * p.stats.seconds_front / static_cast<double>(p.certificate.generated);
+  state.SetLabel(std::string(fp::to_string(method)) + ", " + length + " x 1e-6");
+}
+BENCHMARK(BM_Sliver)
+    ->Args({static_cast<int>(fp::Method::closed), 200})
+    ->Args({static_cast<int>(fp::Method::closed), 1000})
+    ->Args({static_cast<int>(fp::Method::open), 1000})
+    ->Args({static_cast<int>(fp::Method::boundary), 1000})
     ->UseManualTime()
     ->Unit(benchmark::kMillisecond)
     ->Iterations(1);

@@ -345,14 +345,19 @@ class Front {
     }
   }
   void link(std::int32_t s, std::int32_t t) {
-    next_[static_cast<std::size_t>(s)] = t;
-    prev_[static_cast<std::size_t>(t)] = s;
-    nodes_[static_cast<std::size_t>(s)].blocked = 0;
+    join(s, t);
     if (!list_) {
       active_ += segment_active(s) ? 1U : 0U;
     } else {
       relist(s);
     }
+  }
+
+  // The front pointers of link(), without the activity bookkeeping.
+  void join(std::int32_t s, std::int32_t t) {
+    next_[static_cast<std::size_t>(s)] = t;
+    prev_[static_cast<std::size_t>(t)] = s;
+    nodes_[static_cast<std::size_t>(s)].blocked = 0;
   }
 
   [[nodiscard]] bool listed(std::int32_t s) const noexcept { return anext_[static_cast<std::size_t>(s)] != kNone; }
@@ -379,6 +384,15 @@ class Front {
   // Makes segment s's membership of the list agree with its activity. A listed segment keeps its
   // place (s's position in the front does not change); a new one goes next to the nearest listed
   // segment, before it if it lies ahead, after it if behind.
+  //
+  // Anchors. The walk to the nearest listed segment is short only if one is near. On a sliver's
+  // box the front is two long inactive strands joined by short active ends, and an end often has
+  // a single listed segment: when a cut or a placement unlisted it and a new segment was listed
+  // there just after, the walk went along a whole strand to the other end (quadratic: 182 s for
+  // a 1 x 1e-6 rectangle, 2 s now). So within one place_on() a segment that goes inactive but marks the
+  // place of the action stays listed, as an anchor (stale_), and place_on() unlists the anchors
+  // still inactive before it returns. The list is the same at every return: each segment enters
+  // at its place in front order, and the list holds the active segments in front order.
   void relist(std::int32_t s) {
     const bool active = segment_active(s);
     if (active == listed(s)) {
@@ -460,12 +474,31 @@ class Front {
       }
       keep_void(last, kVoidClasses - 1);
     }
+    if (list_ && !listed(before)) {
+      // The first listed segment cut off leaves its place to `before`, an anchor at least.
+      for (std::int32_t v = first;; v = next_[static_cast<std::size_t>(v)]) {
+        if (listed(v)) {
+          list_insert_after(aprev_[static_cast<std::size_t>(v)], before);
+          break;
+        }
+        if (v == last) {
+          break;
+        }
+      }
+    }
     for (std::int32_t v = first;; v = next_[static_cast<std::size_t>(v)]) {
       unlink_segment(v);
       --front_size_;
       if (v == last) {
         break;
       }
+    }
+    if (list_ && listed(before)) {
+      join(before, after);
+      if (!segment_active(before)) {
+        stale_.push_back(before);  // an anchor until place_on() returns
+      }
+      return;
     }
     link(before, after);
   }
@@ -539,14 +572,32 @@ class Front {
     const std::int32_t i = add_node(px, py, r);
     ++front_size_;
     if (!list_) {
-      unlink_segment(c);  // the list keeps c in place: link() relists it
+      unlink_segment(c);
+      link(c, i);
+      link(i, n);
+      return i;
     }
-    link(c, i);
-    link(i, n);
+    // i is listed next to c (listed, or an anchor) before c is relisted.
+    join(c, i);
+    join(i, n);
+    relist(i);
+    relist(c);
     return i;
   }
 
+  // place_on_front(), then the anchors left inactive leave the list (see relist()).
   std::int32_t place_on(std::int32_t c, double r) {
+    const std::int32_t placed_node = place_on_front(c, r);
+    for (const std::int32_t s : stale_) {
+      if (listed(s) && !segment_active(s)) {
+        list_remove(s);
+      }
+    }
+    stale_.clear();
+    return placed_node;
+  }
+
+  std::int32_t place_on_front(std::int32_t c, double r) {
     std::int32_t n = next_[static_cast<std::size_t>(c)];
     for (;;) {
       ++stats_.attempts;
@@ -729,6 +780,7 @@ class Front {
   std::vector<std::int32_t> next_, prev_;
   bool list_ = false;                        // keep the list below (closed form, elongated box)
   std::vector<std::int32_t> anext_, aprev_;  // the active segments, in front order
+  std::vector<std::int32_t> stale_;          // inactive segments listed as anchors (relist())
   std::size_t active_ = 0;
   std::size_t front_size_ = 0;
   std::int32_t retired_ = kNone;  // place_on()'s retired segment

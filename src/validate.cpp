@@ -3,11 +3,12 @@
 // Why not CGAL::is_valid_polygon_with_holes: its hole test is quadratic in practice (measured
 // 18-24 s for 30k edges, 459 s for 100k, see shared/design.md) and it prints. Here every pair of
 // edges whose boxes meet is found by CGAL::box_self_intersection_d and classified with exact
-// orientation tests; ring nesting is decided by exact ray parity through the edge grid; and the
-// connectivity of each polygon's interior follows from the graph of touching rings. Where the
-// edges' boxes meet in far more pairs than there are edges (long edges fanning around a common
-// region, as in a star with thousands of spikes) and none of them has shown a problem or a touch,
-// a sweep (CGAL::do_curves_intersect, O(n log n)) decides whether any pair would.
+// orientation tests; ring nesting is decided by a plane sweep that finds each ring's innermost
+// enclosing ring (ring_tree.cpp, exact orientation tests); and the connectivity of each polygon's
+// interior follows from the graph of touching rings. Where the edges' boxes meet in far more pairs
+// than there are edges (long edges fanning around a common region, as in a star with thousands of
+// spikes) and none of them has shown a problem or a touch, a sweep (CGAL::do_curves_intersect,
+// O(n log n)) decides whether any pair would.
 
 #include <CGAL/Bbox_2.h>
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
@@ -18,6 +19,7 @@
 #include <cstdio>
 #include <deque>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <tuple>
 #include <vector>
@@ -26,6 +28,7 @@
 #include "exact.hpp"
 #include "format.hpp"
 #include "ring_set.hpp"
+#include "ring_tree.hpp"
 
 namespace frontpack::detail {
 
@@ -611,7 +614,18 @@ class Validator {
     throw InvalidDomainError(Kind::rings_overlap, name(self) + ": the ring lies on other rings", site(info.first));
   }
 
+  // Nesting: holes inside their own outer ring and in no other hole of it; an outer ring
+  // inside another polygon only within one of its holes. The nesting tree (ring_tree.hpp, one
+  // sweep) decides for every ring at once; the ray parity of misplaced() only phrases the report
+  // of the first ring found wrong, so the message is the one a ring-by-ring search gives. (Ray
+  // parity for every ring cost O(n) per ring where rays cross many rings, as along a row of
+  // parts, and brute force where every vertex of a ring touches another, as in a checkerboard.)
   void check_nesting(const EdgeGrid& grid) const {
+    const std::vector<std::uint8_t> wrong = misplaced_rings(ring_parents(rs_));
+    const auto first = std::find(wrong.begin(), wrong.end(), std::uint8_t{1});
+    if (first == wrong.end()) {
+      return;
+    }
     std::vector<std::vector<Point>> touch_points(rs_.rings.size());
     for (const Touch& t : touches_) {
       touch_points[t.ring_a].push_back(t.p);
@@ -620,70 +634,134 @@ class Validator {
     for (auto& pts : touch_points) {
       std::sort(pts.begin(), pts.end(), point_less);
     }
+    for (auto r = static_cast<std::uint32_t>(first - wrong.begin()); r < wrong.size(); ++r) {
+      if (wrong[r] != 0) {
+        misplaced(grid, r, touch_points[r]);  // throws
+      }
+    }
+    throw std::logic_error("validate: the nesting tree and ray parity disagree");
+  }
+
+  // The rings that break a nesting rule, from the tree (parent[r]: innermost ring containing r).
+  // A depth-first walk keeps, for each polygon, whether its outer ring and how many of its holes
+  // enclose the ring visited, and how many polygons enclose it through their outer ring alone.
+  [[nodiscard]] std::vector<std::uint8_t> misplaced_rings(const std::vector<std::uint32_t>& parent) const {
+    const std::size_t R = rs_.rings.size();
+    std::vector<std::uint32_t> child_start(R + 2, 0);  // children of r: [child_start[r], child_start[r+1]); roots last
+    for (std::uint32_t r = 0; r < R; ++r) {
+      ++child_start[(parent[r] == no_ring ? R : parent[r]) + 1];
+    }
+    for (std::size_t k = 1; k < child_start.size(); ++k) {
+      child_start[k] += child_start[k - 1];
+    }
+    std::vector<std::uint32_t> children(R);
+    std::vector<std::uint32_t> fill(child_start.begin(), child_start.end() - 1);
+    for (std::uint32_t r = 0; r < R; ++r) {
+      children[fill[parent[r] == no_ring ? R : parent[r]]++] = r;
+    }
+    const std::size_t parts = rs_.part_first_ring.size() - 1;
+    std::vector<std::uint8_t> shell_encloses(parts, 0);
+    std::vector<std::uint32_t> holes_enclosing(parts, 0);
+    std::size_t shells_alone = 0;                          // polygons enclosing through their outer ring and no hole
+    const auto count = [&](std::uint32_t r, bool joins) {  // r joins or leaves the path from the root
+      const RingInfo& info = ring(r);
+      const bool alone_before = shell_encloses[info.part] != 0 && holes_enclosing[info.part] == 0;
+      if (info.ring == 0) {
+        shell_encloses[info.part] = joins ? 1 : 0;
+      } else if (joins) {
+        ++holes_enclosing[info.part];
+      } else {
+        --holes_enclosing[info.part];
+      }
+      const bool alone_after = shell_encloses[info.part] != 0 && holes_enclosing[info.part] == 0;
+      shells_alone = shells_alone + (alone_after ? 1U : 0U) - (alone_before ? 1U : 0U);
+    };
+    std::vector<std::uint8_t> wrong(R, 0);
+    // Stack of (ring, next child to visit); the roots hang below a virtual node R.
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> stack{{static_cast<std::uint32_t>(R), child_start[R]}};
+    while (!stack.empty()) {
+      auto& [node, next] = stack.back();
+      if (next == child_start[node + 1]) {
+        if (node != R) {
+          count(node, false);
+        }
+        stack.pop_back();
+        continue;
+      }
+      const std::uint32_t r = children[next++];
+      const RingInfo& info = ring(r);
+      if (info.ring > 0) {
+        wrong[r] = (shell_encloses[info.part] == 0 || holes_enclosing[info.part] > 0) ? 1 : 0;
+      } else {
+        wrong[r] = shells_alone > 0 ? 1 : 0;
+      }
+      count(r, true);
+      stack.emplace_back(r, child_start[r]);
+    }
+    return wrong;
+  }
+
+  // Reports ring r if it breaks a nesting rule, by the parity of a ray from a point of r on no
+  // other ring (touch_points: the points where r touches other rings, sorted).
+  void misplaced(const EdgeGrid& grid, std::uint32_t r, const std::vector<Point>& touch_points) const {
     const std::size_t parts = rs_.part_first_ring.size() - 1;
     std::vector<std::uint8_t> parity(rs_.rings.size(), 0);
     std::vector<std::uint32_t> crossed;
     std::vector<std::uint32_t> odd;
     std::vector<std::uint8_t> in_hole_of(parts, 0);
-    for (std::uint32_t r = 0; r < rs_.rings.size(); ++r) {
-      const RingInfo& info = ring(r);
-      const std::optional<std::uint32_t> k = free_vertex(r, touch_points[r]);
-      odd.clear();
-      if (k) {
-        crossed.clear();
-        grid.edges_crossing_ray(rs_.v[*k], crossed);
-        for (const std::uint32_t e : crossed) {
-          if (rs_.ring_of[e] != r) {
-            parity[rs_.ring_of[e]] ^= 1U;
-          }
+    const RingInfo& info = ring(r);
+    const std::optional<std::uint32_t> k = free_vertex(r, touch_points);
+    if (k) {
+      grid.edges_crossing_ray(rs_.v[*k], crossed);
+      for (const std::uint32_t e : crossed) {
+        if (rs_.ring_of[e] != r) {
+          parity[rs_.ring_of[e]] ^= 1U;
         }
-        for (const std::uint32_t e : crossed) {
-          const std::uint32_t s = rs_.ring_of[e];
-          if (parity[s] != 0) {
-            odd.push_back(s);
-            parity[s] = 0;
-          }
-        }
-      } else {
-        odd = odd_rings_exact(r);
       }
-      const std::uint32_t at = k ? *k : info.first;
-      // What the parity was taken at: a free vertex, or a point inside the first edge.
-      const std::string witness =
-          k ? vertex(*k) : "the inside of its " + edge(info.first) + " (each of its vertices touches another ring)";
-      const std::optional<Point> witness_point = k ? std::optional<Point>(rs_.v[*k]) : std::nullopt;
-      const std::uint32_t own_shell = rs_.part_first_ring[info.part];
-      if (info.ring > 0) {
-        if (std::find(odd.begin(), odd.end(), own_shell) == odd.end()) {
-          throw InvalidDomainError(
-              Kind::hole_outside_shell,
-              name(r) + ": the hole is not inside its outer ring (" + witness + " lies outside it)", site(at),
-              site(rs_.rings[own_shell].first), witness_point);
+      for (const std::uint32_t e : crossed) {
+        const std::uint32_t s = rs_.ring_of[e];
+        if (parity[s] != 0) {
+          odd.push_back(s);
+          parity[s] = 0;
         }
-        for (const std::uint32_t s : odd) {
-          if (s != own_shell && ring(s).part == info.part) {
-            throw InvalidDomainError(Kind::nested_holes,
-                                     name(r) + " lies inside " + name(s) + " (" + witness + " is inside it)", site(at),
-                                     site(ring(s).first), witness_point);
-          }
-        }
-        continue;
       }
-      // An outer ring may lie inside another polygon only within one of its holes.
-      std::fill(in_hole_of.begin(), in_hole_of.end(), 0);
-      for (const std::uint32_t s : odd) {
-        if (ring(s).ring > 0) {
-          in_hole_of[ring(s).part] = 1;
-        }
+    } else {
+      odd = odd_rings_exact(r);
+    }
+    const std::uint32_t at = k ? *k : info.first;
+    // What the parity was taken at: a free vertex, or a point inside the first edge.
+    const std::string witness =
+        k ? vertex(*k) : "the inside of its " + edge(info.first) + " (each of its vertices touches another ring)";
+    const std::optional<Point> witness_point = k ? std::optional<Point>(rs_.v[*k]) : std::nullopt;
+    const std::uint32_t own_shell = rs_.part_first_ring[info.part];
+    if (info.ring > 0) {
+      if (std::find(odd.begin(), odd.end(), own_shell) == odd.end()) {
+        throw InvalidDomainError(Kind::hole_outside_shell,
+                                 name(r) + ": the hole is not inside its outer ring (" + witness + " lies outside it)",
+                                 site(at), site(rs_.rings[own_shell].first), witness_point);
       }
       for (const std::uint32_t s : odd) {
-        if (ring(s).ring == 0 && in_hole_of[ring(s).part] == 0) {
-          throw InvalidDomainError(Kind::overlapping_parts,
-                                   "polygons " + std::to_string(ring(s).part) + " and " + std::to_string(info.part) +
-                                       " overlap: " + name(r) + " lies inside polygon " + std::to_string(ring(s).part) +
-                                       " (" + witness + " is inside it)",
-                                   site(at), site(ring(s).first), witness_point);
+        if (s != own_shell && ring(s).part == info.part) {
+          throw InvalidDomainError(Kind::nested_holes,
+                                   name(r) + " lies inside " + name(s) + " (" + witness + " is inside it)", site(at),
+                                   site(ring(s).first), witness_point);
         }
+      }
+      return;
+    }
+    // An outer ring may lie inside another polygon only within one of its holes.
+    for (const std::uint32_t s : odd) {
+      if (ring(s).ring > 0) {
+        in_hole_of[ring(s).part] = 1;
+      }
+    }
+    for (const std::uint32_t s : odd) {
+      if (ring(s).ring == 0 && in_hole_of[ring(s).part] == 0) {
+        throw InvalidDomainError(Kind::overlapping_parts,
+                                 "polygons " + std::to_string(ring(s).part) + " and " + std::to_string(info.part) +
+                                     " overlap: " + name(r) + " lies inside polygon " + std::to_string(ring(s).part) +
+                                     " (" + witness + " is inside it)",
+                                 site(at), site(ring(s).first), witness_point);
       }
     }
   }
