@@ -184,6 +184,20 @@ frontpack_tool_check(fill_json_unwritable 2 "cannot write '/nonexistent/dir/s\\.
   NO_FILES ${TOOL_OUT}/fill_json_unwritable/p.csv
   ARGS fill ${S}/l_shape.wkt -o ${TOOL_OUT}/fill_json_unwritable/p.csv --json /nonexistent/dir/s.json)
 
+# One rule for numbers out of the range of doubles, with the same words in every reader; the
+# offending text quoted escaped and cut to 40 characters (issue #27).
+frontpack_tool_test(wkt_underflow 3 "number '1e-400' is out of the range of a double \\(underflows to 0\\)"
+  info --wkt "POLYGON((0 0,1 0,1 1,1e-400 1,0 0))")
+frontpack_tool_test(fill_radius_underflow 5 "radius 'constant:1e-400': '1e-400' is out of the range of a double \\(underflows to 0\\)"
+  fill ${SQ} --radius constant:1e-400)
+frontpack_tool_test(fill_radius_overflow 5 "'1e400' is out of the range of a double \\(overflows to infinity\\)"
+  fill ${SQ} --radius uniform:0.1,1e400)
+frontpack_tool_test(fill_lognormal_default_bounds 5
+  "the default lower bound MEDIAN / GSD\\^3 \\(MEDIAN '0\\.05', GSD '1e308'\\) underflows to 0; give the bounds"
+  fill ${SQ} --radius lognormal:0.05,1e308)
+frontpack_tool_test(check_nul_byte 7 "nul_byte\\.csv:2:5: y '0\\.5\\\\0' is not a number"
+  check ${SQ} ${CMAKE_CURRENT_SOURCE_DIR}/data/tool/nul_byte.csv)
+
 # Ctrl-C: SIGINT one second into a run of about ten million disks cancels it through the progress
 # callback: exit 130 and nothing written.
 find_program(TIMEOUT_PROGRAM timeout)
