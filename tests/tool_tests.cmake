@@ -184,6 +184,19 @@ frontpack_tool_check(fill_json_unwritable 2 "cannot write '/nonexistent/dir/s\\.
   NO_FILES ${TOOL_OUT}/fill_json_unwritable/p.csv
   ARGS fill ${S}/l_shape.wkt -o ${TOOL_OUT}/fill_json_unwritable/p.csv --json /nonexistent/dir/s.json)
 
+# Extreme numbers (issue #27). A domain whose area and whose disk-count estimate underflow (the
+# estimate was 0 / 0, which passed both limits and reached a reserve(): exit 70) packs as at unit
+# scale with every method; one where every coordinate is subnormal is refused, saying why. (Radii
+# up to the largest double, which gave the boundary method exit 70, leave no disk:
+# Hostile.RadiiNearTheLargestDoubleGiveAnEmptyPacking.)
+foreach(m closed open boundary)
+  frontpack_tool_test(fill_underflowing_area_${m} 0
+    "disks: +[1-9][0-9]* .*fraction: +0\\.[5-8].*certificate: certified: [0-9]+ generated, [0-9]+ culled .*, 0 dropped"
+    fill --wkt "POLYGON((0 0,1e-300 0,1e-300 1e-300,0 1e-300,0 0))" --radius constant:1e-301 --method ${m})
+endforeach()
+frontpack_tool_test(fill_subnormal_domain 5 "the domain and the radii are too small"
+  fill --wkt "POLYGON((0 0,4e-320 0,4e-320 4e-320,0 4e-320,0 0))" --radius constant:1e-321)
+
 # One rule for numbers out of the range of doubles, with the same words in every reader; the
 # offending text quoted escaped and cut to 40 characters (issue #27).
 frontpack_tool_test(wkt_underflow 3 "number '1e-400' is out of the range of a double \\(underflows to 0\\)"
