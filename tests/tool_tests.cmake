@@ -172,6 +172,18 @@ frontpack_tool_check(render_bad_width 5 "--width 3: expected 16 to 16384 pixels"
 frontpack_tool_check(render_malformed 7 "malformed_line\\.csv:4:"
   NO_FILES ${TOOL_OUT}/render_malformed/u.png ARGS render ${SQ} ${TD}/malformed_line.csv -o ${TOOL_OUT}/render_malformed/u.png)
 frontpack_tool_check(render_unwritable 2 "cannot write '/nonexistent/dir/u\\.png'" ARGS render ${SQ} ${TD}/good.csv -o /nonexistent/dir/u.png)
+# Disks far larger than the picture, or far outside it: Cairo drew their whole arcs (radius 1e308:
+# past 60 s; 1e20: 15 s). Only the part inside the picture is drawn now: well under a second
+# (the time limit leaves room for the sanitizer build and a busy machine).
+set(O ${TOOL_OUT}/render_huge_radii)
+frontpack_tool_check(render_huge_radii 0 "u\\.png \\(png, 300 x ${square_300_height}, 11 disks\\).*u\\.svg.*u\\.pdf"
+  PNG ${O}/u.png 300 ${square_300_height} FILES ${O}/u.svg ${O}/u.pdf
+  ARGS render ${SQ} ${TD}/huge_radii.csv -o ${O}/u.png -o ${O}/u.svg -o ${O}/u.pdf --width 300 --radius uniform:0.1,1e308)
+set_tests_properties(tool.render_huge_radii PROPERTIES TIMEOUT 20)
+frontpack_tool_check(stats_huge_radii 0 "disks: +11 .*radii: +min 1e-05, .*max 1e\\+308"
+  ARGS stats ${SQ} ${TD}/huge_radii.csv --samples 10000)
+frontpack_tool_check(check_huge_radii 6 "outside: +6 disks .*overlaps: "
+  ARGS check ${SQ} ${TD}/huge_radii.csv)
 frontpack_tool_check(render_help 0 "Example:.*frontpack render shapes/plate_with_holes.wkt packing.csv -o packing.png" ARGS render --help)
 
 # stats: the statistics module on a hand-made file.
