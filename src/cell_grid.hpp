@@ -30,6 +30,7 @@ struct CellGrid {
   double x0 = 0, y0 = 0;  // lower-left corner
   double side = 1, inv_side = 1;
   std::size_t nx = 1, ny = 1;
+  bool coarse = false;  // one_cell(): the margin is not 4 rmax
 
   CellGrid() = default;
   CellGrid(double xmin, double ymin, double w, double h, double rmax) {
@@ -38,6 +39,10 @@ struct CellGrid {
     y0 = ymin - margin;
     const double gw = w + 2 * margin;
     const double gh = h + 2 * margin;
+    if (!(std::isfinite(gw) && std::isfinite(gh))) {
+      one_cell(xmin, ymin);  // rmax beyond about 2e307: no cell size fits the range of doubles
+      return;
+    }
     side = rmax;
     if (const double fit = std::sqrt(gw * gh / 16e6); fit > side) {
       side = fit;  // about 16M cells; the loop below allows for the cells cut at the edges
@@ -46,6 +51,10 @@ struct CellGrid {
       side *= 1.0625;
     }
     inv_side = 1.0 / side;
+    if (!std::isfinite(inv_side)) {
+      one_cell(xmin, ymin);  // a subnormal rmax in a domain as small
+      return;
+    }
     nx = static_cast<std::size_t>(gw * inv_side) + 1;
     ny = static_cast<std::size_t>(gh * inv_side) + 1;
     last_col_ = static_cast<double>(nx - 1);
@@ -73,6 +82,20 @@ struct CellGrid {
 
  private:
   double last_col_ = 0, last_row_ = 0;  // nx - 1, ny - 1
+
+  // Where lengths overflow or a cell's reciprocal does: one cell, 2^1022 wide, whose lower-left
+  // corner lies 2^1020 below and left of the box, so that every coordinate within 2^1021 of the
+  // box maps to it exactly and every scan covers it (the scans are then linear, but disks that
+  // large, or that small, are few).
+  void one_cell(double xmin, double ymin) noexcept {
+    x0 = xmin - 0x1p1020;
+    y0 = ymin - 0x1p1020;
+    side = 0x1p1022;
+    inv_side = 0x1p-1022;
+    nx = ny = 1;
+    last_col_ = last_row_ = 0;
+    coarse = true;
+  }
 
   // g's cell index, clamped to [0, last]: compared before the conversion, which would be undefined
   // for a huge or infinite g.
@@ -179,6 +202,28 @@ struct LengthScale {
       const int e = std::clamp(std::ilogb(length), -1000, 1000);
       k = std::ldexp(1.0, -e);
       inv_k = std::ldexp(1.0, e);
+    }
+  }
+};
+
+/// The generators' unit of length. A run multiplies every length it is given (coordinates relative
+/// to its box's corner, radii, the clearance) by k, a power of two (exact), and its disks by inv_k
+/// on the way out. k is 1 for rmax in [2^-300, 2^300] (about 5e-91 to 2e90), which covers every
+/// domain of ordinary size: their packings are the ones computed without it, bit for bit. Outside,
+/// k = 2^-ilogb(rmax) brings rmax to [1, 2) (k at most 2^1000: a subnormal rmax stays below that),
+/// so that the squares in the overlap tests and the clearance's band around them stay normal
+/// numbers and finite: at 1e-200 they underflowed to 0, and with radii of 1e200 to 1e300 every
+/// pair of disks, their squared distances infinite, tested clear; either way the floating-point
+/// filter decided nothing and a run did not end. A domain that small packs as it does at 1.
+struct WorkScale {
+  double k = 1;
+  double inv_k = 1;
+  WorkScale() = default;
+  explicit WorkScale(double rmax) {
+    if ((rmax > 0 && rmax < 0x1p-300) || (rmax > 0x1p300 && std::isfinite(rmax))) {
+      const LengthScale s(rmax);
+      k = s.k;
+      inv_k = s.inv_k;
     }
   }
 };

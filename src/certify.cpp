@@ -136,9 +136,10 @@ void overlapping_pairs(std::span<const Disk> disks, std::vector<std::pair<std::s
   if (!(side > min_side) || !std::isfinite(side)) {
     side = std::max(min_side, std::max(W, H) / wanted);
   }
-  if (!(side > 0) || !std::isfinite(side)) {
+  if (!(side > 0)) {
     side = 1;  // all centres coincide and every radius is 0
   }
+  // (An infinite side, for radii beyond about 9e307, is one tile: side = 1 made it 10^12 of them.)
   const auto tiles_along = [side](double extent) {
     return static_cast<std::size_t>(std::min(1e6, std::floor(extent / side))) + 1;
   };

@@ -28,7 +28,15 @@ namespace {
 // floating-point tangency nor the rounding of the output (box corner + local position) can make
 // tangent disks overlap. docs/robustness.md, "Clearance".
 double clearance_for(const Domain& domain, const FillOptions& o) {
-  const double scale = domain.max_abs_coordinate() + 5 * o.radii.max();
+  // (At most the largest double: radii beyond about 3.6e307 made it infinite.)
+  const double scale = std::min(domain.max_abs_coordinate() + 5 * o.radii.max(), std::numeric_limits<double>::max());
+  if (!(scale >= std::numeric_limits<double>::min())) {
+    // Every coordinate and radius subnormal: a clearance of a few ulps underflows to 0.
+    throw OptionError("the domain and the radii are too small: their size (largest |coordinate| + 5 rmax = " +
+                      detail::format_double(scale) +
+                      ") must be at least 2.2250738585072014e-308, the smallest normal double, for a clearance of a "
+                      "few ulps to separate tangent disks; scale the domain up (by a power of two, which is exact)");
+  }
   const double minimum = 16 * 0x1p-52 * scale;
   if (o.clearance == 0) {
     return 4 * minimum;
@@ -89,9 +97,10 @@ Packing run_fill(const Domain& domain, const FillOptions& options,
     estimate += detail::estimate_disks(domain.bbox(p), radii);
   }
   // Saturated: an estimate can exceed every integer (1e600 disks for radii of 1e-300).
-  const std::size_t count =
-      estimate < 0x1p63 ? static_cast<std::size_t>(estimate) : std::numeric_limits<std::size_t>::max();
-  if (estimate > static_cast<double>(options.max_disks)) {
+  const std::size_t count = estimate >= 0 && estimate < 0x1p63 ? static_cast<std::size_t>(estimate)
+                                                                : std::numeric_limits<std::size_t>::max();
+  // Written so that a NaN fails the checks (estimate_disks() gives none; a check must not rely on it).
+  if (!(estimate <= static_cast<double>(options.max_disks))) {
     throw LimitError("the request would generate about " + format_count(estimate) + " disks, more than max_disks = " +
                          std::to_string(options.max_disks) + "; use larger radii or raise max_disks",
                      count);
@@ -99,7 +108,7 @@ Packing run_fill(const Domain& domain, const FillOptions& options,
   const double memory_limit =
       options.memory_limit != 0 ? static_cast<double>(options.memory_limit) : 0.75 * physical_memory();
   const double memory = estimate * static_cast<double>(peak_bytes_per_disk);
-  if (memory_limit > 0 && memory > memory_limit) {
+  if (memory_limit > 0 && !(memory <= memory_limit)) {
     throw LimitError("the request would generate about " + format_count(estimate) + " disks, needing about " +
                          format_count(memory) + " bytes of memory, more than the limit of " +
                          format_count(memory_limit) + " bytes; use larger radii or raise memory_limit",

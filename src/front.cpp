@@ -31,7 +31,27 @@ namespace frontpack::detail {
 
 double estimate_disks(const Box& box, const RadiusDistribution& radii) {
   // A random dense packing covers about 0.82 of the area (paper, Sec. 4; our measurements).
-  return 0.85 * box.width() * box.height() / (std::numbers::pi * radii.mean_square());
+  const double mean_square = radii.mean_square();
+  const double estimate = 0.85 * box.width() * box.height() / (std::numbers::pi * mean_square);
+  if (mean_square >= std::numeric_limits<double>::min() && !std::isnan(estimate)) {
+    return estimate;  // E[r^2] normal: the figure is accurate (or 0, or saturated to infinity)
+  }
+  // E[r^2] underflows (radii below about 1e-154; 0 / 0 for a box as small) or is not a number:
+  // the same figure at the scale of rmax (a power of two: exact), with E[(k r)^2] from the
+  // quantiles at 1024 midpoints, since mean_square() has lost it.
+  const LengthScale scale(radii.max());
+  double sum = 0;
+  constexpr int kPoints = 1024;
+  for (int i = 0; i < kPoints; ++i) {
+    const double r = scale.k * radii.quantile((i + 0.5) / kPoints);
+    sum += r * r;
+  }
+  const double scaled_mean_square = sum / kPoints;
+  if (!(scaled_mean_square > 0)) {
+    return std::numeric_limits<double>::infinity();  // radii too small to square even at their scale
+  }
+  const double scaled = 0.85 * (box.width() * scale.k) * (box.height() * scale.k) / (std::numbers::pi * scaled_mean_square);
+  return std::isnan(scaled) ? std::numeric_limits<double>::infinity() : scaled;
 }
 
 namespace {
@@ -62,10 +82,12 @@ class Front {
       : req_(req), rng_(rng), out_(out), stats_(stats), control_(req.max_disks, req.tick) {
     // Work in coordinates local to the box's lower-left corner, so that a translated domain
     // gives the same computation (and small numbers for domains far from the origin).
+    // And in the unit of WorkScale (1 but for rmax outside [2^-300, 2^300]).
+    unit_ = WorkScale(req.radii->max());
     origin_ = Point{req.box.xmin, req.box.ymin};
-    box_ = Box{0, 0, req.box.xmax - origin_.x, req.box.ymax - origin_.y};
-    rmax_ = req.radii->max();
-    clearance_ = req.clearance;
+    box_ = Box{0, 0, (req.box.xmax - origin_.x) * unit_.k, (req.box.ymax - origin_.y) * unit_.k};
+    rmax_ = req.radii->max() * unit_.k;
+    clearance_ = req.clearance * unit_.k;
     scale_ = LengthScale(rmax_);
     margin_ = clearance_ / 2;
     band_ = clearance_ / 4;
@@ -74,9 +96,9 @@ class Front {
     const double short_side = std::min(box_.width(), box_.height());
     list_ = !Open && !(long_side <= kListAspect * short_side);  // NaN-safe: a degenerate box lists
     fill_voids_ = req.fill_voids;
-    classes_ = RadiusClasses<kVoidClasses>(req.radii->min(), rmax_);
+    classes_ = RadiusClasses<kVoidClasses>(req.radii->min() * unit_.k, rmax_);
 
-    const double estimate = estimate_disks(box_, *req.radii);
+    const double estimate = estimate_disks(req.box, *req.radii);
     const auto reserve = static_cast<std::size_t>(std::min(estimate * 1.3 + 64, 1e9));
     nodes_.reserve(reserve + kFirstDisk);
     {  // In one call, the pages of the nodes this box is expected to take (huge_pages.hpp).
@@ -107,7 +129,7 @@ class Front {
     double r = draw();
     std::size_t skips = 0;
     while (active_ > 0 && skips <= front_size_ + 1) {
-      if (control_.stop(placed(), area_, result)) {
+      if (control_.stop(placed(), area_ * unit_.inv_k * unit_.inv_k, result)) {
         break;
       }
       if (!segment_active(cur)) {
@@ -147,7 +169,7 @@ class Front {
     for (auto& v : voids_) {
       release(v);
     }
-    move_out(nodes_, kFirstDisk, origin_, out_);
+    move_out(nodes_, kFirstDisk, origin_, unit_.inv_k, out_);
     return result;
   }
 
@@ -722,7 +744,8 @@ class Front {
   // front D1 -> D2 -> D3 -> D1.
   std::int32_t start_closed() {
     const Point s =
-        req_.start ? Point{req_.start->x - origin_.x, req_.start->y - origin_.y} : Point{box_.xmax / 2, box_.ymax / 2};
+        req_.start ? Point{(req_.start->x - origin_.x) * unit_.k, (req_.start->y - origin_.y) * unit_.k}
+                   : Point{box_.xmax / 2, box_.ymax / 2};
     const double r1 = draw();
     const double r2 = draw();
     const double r3 = draw();
@@ -756,12 +779,13 @@ class Front {
     return kLeft;
   }
 
-  double draw() { return req_.radii->quantile(rng_.uniform()); }
+  double draw() { return req_.radii->quantile(rng_.uniform()) * unit_.k; }
 
   const FrontRequest& req_;
   Rng& rng_;
   std::vector<Disk>& out_;
   FillStats& stats_;
+  WorkScale unit_;
   Point origin_;
   Box box_;
   double rmax_ = 0;

@@ -63,7 +63,9 @@ class RunControl {
   std::size_t last_tick_ = 0;
 };
 
-/// Estimated number of disks that fill `box` with radii from `radii` (a dense random packing).
+/// Estimated number of disks that fill `box` with radii from `radii` (a dense random packing):
+/// never NaN (areas and E[r^2] that underflow are taken at the scale of rmax), infinite where the
+/// count exceeds the doubles.
 [[nodiscard]] double estimate_disks(const Box& box, const RadiusDistribution& radii);
 
 /// Fills req.box, appending the disks to `out` in generation order. The generated disks never

@@ -136,7 +136,8 @@ void prefault(std::vector<T, A>& v, std::size_t n) noexcept {
 #endif
 }
 
-/// Appends the disks of nodes[first, size), shifted by `origin`, to `out` and frees the nodes.
+/// Appends the disks of nodes[first, size), scaled by `unit` (a power of two: exact) and shifted
+/// by `origin`, to `out` and frees the nodes.
 /// The copy gives the nodes' memory back as it goes, a 2 MiB block of the nodes' storage at a
 /// time, so that the output's fresh pages are the ones just given back: the peak holds the nodes
 /// or the output, not both, and the output's first touches reuse memory the machine has just
@@ -144,7 +145,7 @@ void prefault(std::vector<T, A>& v, std::size_t n) noexcept {
 /// output is reserved first, so that it never moves (and nothing throws) while nodes are
 /// discarded.
 template <class Node, class A>
-void move_out(std::vector<Node, A>& nodes, std::size_t first, Point origin, std::vector<Disk>& out) {
+void move_out(std::vector<Node, A>& nodes, std::size_t first, Point origin, double unit, std::vector<Disk>& out) {
   static_assert(sizeof(Node) <= HugePageAllocator<Node>::kHuge);
   constexpr std::size_t kStep = HugePageAllocator<Node>::kHuge / sizeof(Node);
   if (const std::size_t n = nodes.size() - std::min(first, nodes.size()); out.capacity() - out.size() < n) {
@@ -154,7 +155,7 @@ void move_out(std::vector<Node, A>& nodes, std::size_t first, Point origin, std:
   for (std::size_t i = first; i < nodes.size();) {
     const std::size_t end = std::min(nodes.size(), (i / kStep + 1) * kStep);  // a block boundary
     for (; i < end; ++i) {
-      out.push_back(Disk{{origin.x + nodes[i].x, origin.y + nodes[i].y}, nodes[i].r});
+      out.push_back(Disk{{origin.x + nodes[i].x * unit, origin.y + nodes[i].y * unit}, nodes[i].r * unit});
     }
     discard(nodes, done, end);
     done = end;

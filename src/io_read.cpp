@@ -1,6 +1,5 @@
 // Readers of disk files: CSV and Yade text, strict, exact (std::from_chars), locale-independent.
 #include <cerrno>
-#include <charconv>
 #include <cmath>
 #include <cstring>
 #include <fstream>
@@ -11,6 +10,7 @@
 #include <vector>
 
 #include "frontpack/io.hpp"
+#include "numbers.hpp"
 #include "read_file.hpp"
 
 namespace frontpack {
@@ -33,12 +33,10 @@ std::string_view trim(std::string_view s) {
   return s;
 }
 
-// The offending text as quoted in a message, shortened if long.
+// The offending text as quoted in a message: escaped (a NUL byte shows as \0) and shortened if
+// long (numbers.hpp).
 std::string quote(std::string_view s) {
-  constexpr std::size_t max_chars = 60;
-  std::string out(1, '\'');
-  out.append(s.substr(0, max_chars)).append(s.size() > max_chars ? "...'" : "'");
-  return out;
+  return detail::quote_text(s);
 }
 
 // Reads lines, counting them, without their "\n" or "\r\n" and without a UTF-8 byte order mark at
@@ -82,18 +80,19 @@ class Lines {
   std::size_t number_ = 0;
 };
 
-// One number: the whole field, exactly as std::from_chars reads it, finite.
+// One number: the whole field, exactly as std::from_chars reads it, finite; out of the range of
+// doubles (overflowing, or underflowing to 0) it is refused, as by every reader (numbers.hpp).
 double parse_number(const Lines& lines, std::string_view field, const char* what) {
   const std::size_t column = lines.column_of(field);
   if (field.empty()) {
     lines.fail(Kind::bad_number, std::string("expected a number for ") + what + ", got nothing", column);
   }
-  double value = 0;
-  const auto [end, ec] = std::from_chars(field.data(), field.data() + field.size(), value);
-  if (ec == std::errc::result_out_of_range) {
-    lines.fail(Kind::bad_number, std::string(what) + " " + quote(field) + " is out of the range of a double", column);
+  const detail::Decimal d = detail::parse_decimal(field);
+  const double value = d.value;
+  if (d.status == detail::DecimalStatus::overflow || d.status == detail::DecimalStatus::underflow) {
+    lines.fail(Kind::bad_number, std::string(what) + " " + detail::out_of_range(field, d.status), column);
   }
-  if (ec != std::errc{} || end != field.data() + field.size()) {
+  if (d.status != detail::DecimalStatus::ok) {
     lines.fail(Kind::bad_number, std::string(what) + " " + quote(field) + " is not a number", column);
   }
   if (!std::isfinite(value)) {

@@ -2,7 +2,6 @@
 // is documented in include/frontpack/sizes.hpp and docs/distributions.md.
 #include <algorithm>
 #include <cctype>
-#include <charconv>
 #include <cmath>
 #include <cstddef>
 #include <fstream>
@@ -14,6 +13,7 @@
 
 #include "format.hpp"
 #include "frontpack/fill.hpp"
+#include "numbers.hpp"
 #include "read_file.hpp"
 
 namespace frontpack {
@@ -49,27 +49,34 @@ std::vector<std::string_view> split(std::string_view s, char sep) {
   }
 }
 
-// A whole field as a double (C locale, "nan" and "inf" included: the callers check finiteness
-// with a message that says what the number is). False if it is not a number.
-bool to_double(std::string_view text, double& value) {
+// A whole field (trimmed, a leading '+' allowed) as a double: C locale, "nan" and "inf" included
+// (the callers check finiteness with a message that says what the number is), and out of the
+// range of doubles refused as by every reader (numbers.hpp): the status says which.
+detail::Decimal to_double(std::string_view text) {
   text = trim(text);
   if (!text.empty() && text.front() == '+') {
     text.remove_prefix(1);
   }
-  if (text.empty()) {
-    return false;
-  }
-  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
-  return ec == std::errc() && end == text.data() + text.size();
+  return detail::parse_decimal(text);
 }
 
-// 'text', quoted (built by appending: GCC 12 warns falsely, -Wrestrict, about "'" + string).
-std::string quoted(std::string_view text) {
-  std::string out("'");
-  out += text;
-  out += "'";
-  return out;
+bool out_of_range(const detail::Decimal& d) {
+  return d.status == detail::DecimalStatus::overflow || d.status == detail::DecimalStatus::underflow;
 }
+
+// What is wrong with field `text` that to_double() read as `d` (not ok): "'1e-400' is out of the
+// range of a double (underflows to 0)" or "'x' is not a number".
+std::string number_problem(std::string_view text, const detail::Decimal& d) {
+  text = trim(text);
+  return out_of_range(d) ? detail::out_of_range(text, d.status) : detail::quote_text(text) + " is not a number";
+}
+
+// 'text', quoted and escaped, at most 40 characters of it (numbers.hpp); a whole spec or a file
+// name up to 160.
+std::string in_quotes(std::string_view text, std::size_t max_chars = detail::kQuotedChars) {
+  return detail::quote_text(text, max_chars);
+}
+constexpr std::size_t kWholeSpec = 160;
 
 bool ends_with_csv(std::string_view s) {
   if (s.size() < 4) {
@@ -118,17 +125,19 @@ class SpecParser {
       }
       fail(std::string(message));
     }
-    fail("unknown distribution '" + std::string(kind) + "'; " + kExpected);
+    fail("unknown distribution " + in_quotes(kind) + "; " + kExpected);
   }
 
  private:
-  [[nodiscard]] std::string prefix() const { return "radius '" + std::string(spec_) + "': "; }
+  [[nodiscard]] std::string prefix() const { return "radius " + in_quotes(spec_, kWholeSpec) + ": "; }
   [[noreturn]] void fail(const std::string& detail) const { throw OptionError(prefix() + detail); }
 
   void read_modifiers(std::string_view text) {
     modified_ = true;
     for (const std::string_view raw : split(text, '@')) {
       const std::string_view word = trim(raw);
+      std::string modifier("@");  // (appended: GCC 12 warns falsely, -Wrestrict, about "@" + string)
+      modifier += word;
       bool* seen = nullptr;
       if (word == "area" || word == "number") {
         seen = &basis_given_;
@@ -137,17 +146,19 @@ class SpecParser {
         seen = &kind_given_;
         kind_ = word == "radius" ? SizeKind::radius : SizeKind::diameter;
       } else {
-        fail("unknown modifier '@" + std::string(word) + "'; expected @area, @number, @radius or @diameter");
+        fail("unknown modifier " + in_quotes(modifier) + "; expected @area, @number, @radius or @diameter");
       }
       if (*seen) {
-        fail("modifier '@" + std::string(word) + "' conflicts with or repeats an earlier one");
+        fail("modifier " + in_quotes(modifier) + " conflicts with or repeats an earlier one");
       }
       *seen = true;
     }
   }
 
+  // The numbers of `args`, and in `tokens` the text of each as given (trimmed), for messages.
   std::vector<double> numbers(std::string_view kind, std::string_view args, std::size_t min_count,
-                              std::size_t max_count, const char* syntax) const {
+                              std::size_t max_count, const char* syntax,
+                              std::vector<std::string_view>* tokens = nullptr) const {
     std::vector<double> values;
     const std::vector<std::string_view> fields = split(args, ',');
     if (fields.size() < min_count || fields.size() > max_count) {
@@ -155,11 +166,17 @@ class SpecParser {
            (fields.size() == 1 ? "" : "s"));
     }
     for (const std::string_view f : fields) {
-      double v = 0;
-      if (!to_double(f, v)) {
-        fail(quoted(trim(f)) + " is not a number (" + std::string(kind) + ":" + syntax + ")");
+      const detail::Decimal d = to_double(f);
+      if (out_of_range(d)) {
+        fail(number_problem(f, d));
       }
-      values.push_back(v);
+      if (d.status != detail::DecimalStatus::ok) {
+        fail(number_problem(f, d) + " (" + std::string(kind) + ":" + syntax + ")");
+      }
+      values.push_back(d.value);
+      if (tokens != nullptr) {
+        tokens->push_back(trim(f));
+      }
     }
     return values;
   }
@@ -173,21 +190,35 @@ class SpecParser {
       return Radii::constant(numbers(kind, args, 1, 1, "R")[0]);
     }
     if (kind == "normal") {
-      auto v = numbers(kind, args, 2, 4, "MEAN,SD[,LO,HI]");
+      std::vector<std::string_view> t;
+      auto v = numbers(kind, args, 2, 4, "MEAN,SD[,LO,HI]", &t);
       if (v.size() == 3) {
         fail("normal takes MEAN,SD or MEAN,SD,LO,HI, got 3 values");
       }
       if (v.size() == 2) {
         v.push_back(v[0] - 3 * v[1]);
         v.push_back(v[0] + 3 * v[1]);
-        if (std::isfinite(v[0]) && std::isfinite(v[1]) && v[1] > 0 && !(v[2] > 0)) {
-          fail("normal: the default lower bound MEAN - 3 SD = " + format_double(v[2]) +
-               " is not > 0; give the bounds: normal:MEAN,SD,LO,HI");
+        // Bounds the user did not give are named by the numbers given (MEAN and SD): a message
+        // about a bound of "-inf" or "0.05" alone would name neither.
+        if (std::isfinite(v[0]) && std::isfinite(v[1]) && v[1] > 0) {
+          const std::string given = " (MEAN " + in_quotes(t[0]) + ", SD " + in_quotes(t[1]) + ")";
+          const char* const hint = "; give the bounds: normal:MEAN,SD,LO,HI";
+          if (!(v[2] > 0)) {
+            fail("normal: the default lower bound MEAN - 3 SD = " + format_double(v[2]) + given + " is not > 0" + hint);
+          }
+          if (!std::isfinite(v[3])) {
+            fail("normal: the default upper bound MEAN + 3 SD" + given + " overflows to infinity" + hint);
+          }
+          if (!(v[2] < v[3])) {
+            fail("normal: the default bounds MEAN -/+ 3 SD" + given + " round to the same number, " +
+                 format_double(v[2]) + ": SD is below the precision of MEAN" + hint);
+          }
         }
       }
       return Radii::normal(v[0], v[1], v[2], v[3]);
     }
-    auto v = numbers(kind, args, 2, 4, "MEDIAN,GSD[,LO,HI]");
+    std::vector<std::string_view> t;
+    auto v = numbers(kind, args, 2, 4, "MEDIAN,GSD[,LO,HI]", &t);
     if (v.size() == 3) {
       fail("lognormal takes MEDIAN,GSD or MEDIAN,GSD,LO,HI, got 3 values");
     }
@@ -195,6 +226,17 @@ class SpecParser {
       const double spread = v[1] * v[1] * v[1];
       v.push_back(v[0] / spread);
       v.push_back(v[0] * spread);
+      // As for normal: default bounds out of range are named by MEDIAN and GSD.
+      if (std::isfinite(v[0]) && v[0] > 0 && std::isfinite(v[1]) && v[1] > 1) {
+        const std::string given = " (MEDIAN " + in_quotes(t[0]) + ", GSD " + in_quotes(t[1]) + ")";
+        const char* const hint = "; give the bounds: lognormal:MEDIAN,GSD,LO,HI";
+        if (!(v[2] > 0)) {
+          fail("lognormal: the default lower bound MEDIAN / GSD^3" + given + " underflows to 0" + hint);
+        }
+        if (!std::isfinite(v[3])) {
+          fail("lognormal: the default upper bound MEDIAN * GSD^3" + given + " overflows to infinity" + hint);
+        }
+      }
     }
     return Radii::lognormal(v[0], v[1], v[2], v[3]);
   }
@@ -208,7 +250,7 @@ class SpecParser {
       }
       const SizeTable t = read_size_table(std::filesystem::path(std::string(args)));
       if (t.cumulative != curve) {
-        fail(quoted(args) + " has a '" + (t.cumulative ? "passing" : "fraction") + "' column (" +
+        fail(in_quotes(args, kWholeSpec) + " has a '" + (t.cumulative ? "passing" : "fraction") + "' column (" +
              (t.cumulative ? "a grading curve): use curve:" : "discrete classes): use discrete:") + std::string(args));
       }
       return radii_from_table(t, basis);
@@ -217,12 +259,19 @@ class SpecParser {
     const std::vector<std::string_view> items = split(args, ',');
     for (std::size_t k = 0; k < items.size(); ++k) {
       const std::vector<std::string_view> pair = split(items[k], ':');
-      SizeFraction row;
-      if (pair.size() != 2 || !to_double(pair[0], row.size) || !to_double(pair[1], row.fraction)) {
-        fail(std::string(curve ? "curve" : "discrete") + ": item " + std::to_string(k + 1) + " '" +
-             std::string(trim(items[k])) + "' is not " + (curve ? "SIZE:PASSING" : "SIZE:FRACTION") + " (two numbers)");
+      const std::string item = std::string(curve ? "curve" : "discrete") + ": item " + std::to_string(k + 1);
+      for (const std::string_view field : pair) {
+        if (const detail::Decimal d = to_double(field); pair.size() == 2 && out_of_range(d)) {
+          fail(item + ": " + number_problem(field, d));
+        }
       }
-      rows.push_back(row);
+      const detail::Decimal size = pair.size() == 2 ? to_double(pair[0]) : detail::Decimal{};
+      const detail::Decimal fraction = pair.size() == 2 ? to_double(pair[1]) : detail::Decimal{};
+      if (size.status != detail::DecimalStatus::ok || fraction.status != detail::DecimalStatus::ok) {
+        fail(item + " " + in_quotes(trim(items[k])) + " is not " + (curve ? "SIZE:PASSING" : "SIZE:FRACTION") +
+             " (two numbers)");
+      }
+      rows.push_back(SizeFraction{size.value, fraction.value});
     }
     const SizeKind kind = kind_given_ ? kind_ : (curve ? SizeKind::diameter : SizeKind::radius);
     return curve ? Radii::grading_curve(std::move(rows), basis, kind) : Radii::discrete(std::move(rows), basis, kind);
@@ -269,24 +318,26 @@ SizeTable parse_size_table(std::string_view text, std::string_view source) {
       if ((a != "radius" && a != "diameter") || (b != "fraction" && b != "passing")) {
         fail(line_no,
              "expected a header 'radius,fraction', 'diameter,fraction', 'radius,passing' or "
-             "'diameter,passing', got '" +
-                 std::string(content) + "'");
+             "'diameter,passing', got " +
+                 in_quotes(content));
       }
       table.kind = a == "radius" ? SizeKind::radius : SizeKind::diameter;
       table.cumulative = b == "passing";
       header = true;
       continue;
     }
-    SizeFraction row;
     if (fields.size() != 2) {
-      fail(line_no, "expected SIZE,FRACTION (2 comma-separated numbers), got '" + std::string(content) + "'");
+      fail(line_no, "expected SIZE,FRACTION (2 comma-separated numbers), got " + in_quotes(content));
     }
-    if (!to_double(fields[0], row.size)) {
-      fail(line_no, quoted(trim(fields[0])) + " is not a number");
+    const detail::Decimal size = to_double(fields[0]);
+    if (size.status != detail::DecimalStatus::ok) {
+      fail(line_no, number_problem(fields[0], size));
     }
-    if (!to_double(fields[1], row.fraction)) {
-      fail(line_no, quoted(trim(fields[1])) + " is not a number");
+    const detail::Decimal fraction = to_double(fields[1]);
+    if (fraction.status != detail::DecimalStatus::ok) {
+      fail(line_no, number_problem(fields[1], fraction));
     }
+    const SizeFraction row{size.value, fraction.value};
     const char* size_name = to_string(table.kind);
     const char* fraction_name = table.cumulative ? "fraction passing" : "fraction";
     if (!std::isfinite(row.size) || !(row.size > 0)) {

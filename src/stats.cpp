@@ -32,6 +32,27 @@ double unit(std::uint64_t h) noexcept {
   return static_cast<double>(h >> 11) * 0x1p-53;
 }
 
+// The cells of a grid along an axis `g` cells long (a length over a cell size, maybe a fraction
+// of a cell more): floor(g) + 1, at least 1 and at most `cap`. A NaN (lengths that overflowed, or a
+// cell size that underflowed) gives 1: a coarser grid finds the same neighbours, more slowly.
+std::size_t axis_cells(double g, std::size_t cap) noexcept {
+  if (!(g >= 0)) {
+    return 1;
+  }
+  return g < static_cast<double>(cap - 1) ? static_cast<std::size_t>(g) + 1 : cap;
+}
+constexpr std::size_t kMaxAxisCells = std::size_t{1} << 24;
+
+// A length scale (a power of two) that brings lengths of the order of `length` to about 1 when
+// they are so small or so large that their squares leave the range of doubles; 1 otherwise (so
+// that ordinary figures are the ones computed without it, bit for bit).
+double square_safe_scale(double length) noexcept {
+  if (!(length > 0) || !std::isfinite(length) || (length >= 0x1p-400 && length <= 0x1p400)) {
+    return 1;
+  }
+  return std::ldexp(1.0, -std::clamp(std::ilogb(length), -1000, 1000));
+}
+
 // Index of the cell of coordinate x in a grid from `origin` with cell size h, clamped to [0, n).
 std::size_t cell_index(double x, double origin, double inv_h, std::size_t n) noexcept {
   const double t = std::floor((x - origin) * inv_h);
@@ -59,8 +80,8 @@ class EdgeIndex {
     inv_h_ = 1 / h_;
     x0_ = b.xmin;
     y0_ = b.ymin;
-    nx_ = static_cast<std::size_t>(std::floor(b.width() * inv_h_)) + 1;
-    ny_ = static_cast<std::size_t>(std::floor(b.height() * inv_h_)) + 1;
+    nx_ = axis_cells(b.width() * inv_h_, kMaxAxisCells);
+    ny_ = axis_cells(b.height() * inv_h_, kMaxAxisCells);
     std::vector<std::pair<std::size_t, std::uint32_t>> entries;  // (cell, edge)
     for (std::size_t e = 0; e < a_.size(); ++e) {
       const Point a = a_[e];
@@ -174,8 +195,8 @@ void count_contacts(std::span<const Disk> disks, double tol, PackingStats& s, st
   const double inv_h = 1 / h;
   const double x0 = b.xmin - s.sizes.rmax - tol;
   const double y0 = b.ymin - s.sizes.rmax - tol;
-  const std::size_t nx = static_cast<std::size_t>(w * inv_h) + 1;
-  const std::size_t ny = static_cast<std::size_t>(ht * inv_h) + 1;
+  const std::size_t nx = axis_cells(w * inv_h, kMaxAxisCells);
+  const std::size_t ny = axis_cells(ht * inv_h, kMaxAxisCells);
   const auto box_of = [tol](const Disk& d) {
     const double e = d.radius + tol / 2;
     return Box{d.centre.x - e, d.centre.y - e, d.centre.x + e, d.centre.y + e};
@@ -247,9 +268,13 @@ void sample_fractions(const Domain& domain, std::span<const Disk> disks, const E
   if (samples == 0 || !(area > 0)) {
     return;
   }
-  const double step = std::sqrt(area / static_cast<double>(samples));
-  const auto nx = static_cast<std::size_t>(std::max(1.0, std::ceil(b.width() / step)));
-  const auto ny = static_cast<std::size_t>(std::max(1.0, std::ceil(b.height() / step)));
+  double step = std::sqrt(area / static_cast<double>(samples));
+  if (!(step > 0)) {
+    step = std::sqrt(area) / std::sqrt(static_cast<double>(samples));  // area / samples underflowed
+  }
+  // ceil(width / step), at least 1 (and at most kMaxAxisCells).
+  const std::size_t nx = axis_cells(std::ceil(b.width() / step) - 1, kMaxAxisCells);
+  const std::size_t ny = axis_cells(std::ceil(b.height() / step) - 1, kMaxAxisCells);
   const double sx = b.width() / static_cast<double>(nx);
   const double sy = b.height() / static_cast<double>(ny);
   std::vector<std::uint32_t> order(disks.size());
@@ -349,16 +374,24 @@ std::size_t wall_contacts(const EdgeIndex& edges, const Disk& d, double tol) {
   return points.size();
 }
 
+// The area weight of radius x, r^2 at a scale k from square_safe_scale() (the weights are only
+// ever compared with or divided by one another).
+double weight(double x, double k) noexcept {
+  const double y = x * k;
+  return y * y;
+}
+
 // The radius with half of the area (sum of r^2) at or below it; sorts r. 0 for none.
 double median_by_area(std::vector<double>& r) {
   std::sort(r.begin(), r.end());
+  const double k = square_safe_scale(r.empty() ? 1 : r.back());
   double total = 0;
   for (const double x : r) {
-    total += x * x;
+    total += weight(x, k);
   }
   double acc = 0;
   for (const double x : r) {
-    acc += x * x;
+    acc += weight(x, k);
     if (acc >= total / 2) {
       return x;
     }
@@ -372,13 +405,14 @@ double ks_by_area(const std::vector<double>& a, const std::vector<double>& b) {
   if (a.empty() || b.empty()) {
     return 0;
   }
+  const double k = square_safe_scale(std::max(a.back(), b.back()));
   double total_a = 0;
   double total_b = 0;
   for (const double x : a) {
-    total_a += x * x;
+    total_a += weight(x, k);
   }
   for (const double x : b) {
-    total_b += x * x;
+    total_b += weight(x, k);
   }
   double ks = 0;
   double acc_a = 0;
@@ -389,11 +423,11 @@ double ks_by_area(const std::vector<double>& a, const std::vector<double>& b) {
     // Both sides of each jump: take every radius equal to the smallest one left, then compare.
     const double x = j == b.size() || (i < a.size() && a[i] <= b[j]) ? a[i] : b[j];
     while (i < a.size() && a[i] == x) {
-      acc_a += x * x;
+      acc_a += weight(x, k);
       ++i;
     }
     while (j < b.size() && b[j] == x) {
-      acc_b += x * x;
+      acc_b += weight(x, k);
       ++j;
     }
     ks = std::max(ks, std::abs(acc_a / total_a - acc_b / total_b));
@@ -414,10 +448,12 @@ SizeStats measure_sizes(std::span<const double> radii, const RadiusDistribution*
   std::vector<double> r(radii.begin(), radii.end());
   std::sort(r.begin(), r.end());
   const std::size_t n = r.size();
+  // Area weights (r^2) at a scale where they neither overflow nor underflow.
+  const double k = square_safe_scale(n > 0 ? r.back() : 1);
   double total_area = 0;
   double sum = 0;
   for (const double x : r) {
-    total_area += x * x;
+    total_area += weight(x, k);
     sum += x;
   }
   if (n > 0) {
@@ -426,13 +462,14 @@ SizeStats measure_sizes(std::span<const double> radii, const RadiusDistribution*
     s.mean = sum / static_cast<double>(n);
     double var = 0;
     for (const double x : r) {
-      var += (x - s.mean) * (x - s.mean);
+      const double d = (x - s.mean) * k;
+      var += d * d;
     }
-    s.sd = std::sqrt(var / static_cast<double>(n));
+    s.sd = std::sqrt(var / static_cast<double>(n)) / k;
     s.median_number = r[(n - 1) / 2];
     double acc = 0;
     for (const double x : r) {
-      acc += x * x;
+      acc += weight(x, k);
       if (acc >= total_area / 2) {
         s.median_area = x;
         break;
@@ -443,12 +480,12 @@ SizeStats measure_sizes(std::span<const double> radii, const RadiusDistribution*
   if (requested != nullptr && n > 0) {
     double count_before = 0;
     double area_before = 0;
-    for (std::size_t k = 0; k < n;) {
-      const double x = r[k];
+    for (std::size_t i = 0; i < n;) {
+      const double x = r[i];
       double area_here = 0;
-      std::size_t m = k;
+      std::size_t m = i;
       while (m < n && r[m] == x) {
-        area_here += x * x;
+        area_here += weight(x, k);
         ++m;
       }
       const double fn_lo = count_before / static_cast<double>(n);
@@ -469,21 +506,21 @@ SizeStats measure_sizes(std::span<const double> radii, const RadiusDistribution*
       }
       count_before = static_cast<double>(m);
       area_before += area_here;
-      k = m;
+      i = m;
     }
   }
   // Per-class table: classes (previous radius, radius].
   if (requested != nullptr) {
     const std::vector<double> classes = requested->class_radii();
-    std::size_t k = 0;
+    std::size_t next = 0;
     double count = 0;
     double area = 0;
     SizeClassRow previous;
     for (const double c : classes) {
-      while (k < n && r[k] <= c) {
+      while (next < n && r[next] <= c) {
         count += 1;
-        area += r[k] * r[k];
-        ++k;
+        area += weight(r[next], k);
+        ++next;
       }
       SizeClassRow row;
       row.radius = c;
@@ -508,18 +545,25 @@ SizeStats measure_sizes(std::span<const double> radii, const RadiusDistribution*
   }
   if (histogram_bins > 0 && lo <= hi) {
     const std::size_t bins = lo == hi ? 1 : histogram_bins;
-    const double log_span = std::log(hi / lo);
+    // hi / lo overflows for radii spanning more than the range of doubles (1e-10 to 1e308): then
+    // the edges are taken from log(lo) (the same edges up to rounding).
+    const bool wide = !std::isfinite(hi / lo);
+    const double log_span = wide ? std::log(hi) - std::log(lo) : std::log(hi / lo);
+    const auto edge = [&](std::size_t b) {
+      const double f = log_span * static_cast<double>(b) / static_cast<double>(bins);
+      return wide ? std::exp(std::log(lo) + f) : lo * std::exp(f);
+    };
     for (std::size_t b = 0; b < bins; ++b) {
       HistogramBin bin;
-      bin.lo = b == 0 ? lo : lo * std::exp(log_span * static_cast<double>(b) / static_cast<double>(bins));
-      bin.hi = b + 1 == bins ? hi : lo * std::exp(log_span * static_cast<double>(b + 1) / static_cast<double>(bins));
+      bin.lo = b == 0 ? lo : edge(b);
+      bin.hi = b + 1 == bins ? hi : edge(b + 1);
       s.histogram.push_back(bin);
     }
     for (const double x : r) {
       std::size_t b = 0;
       if (bins > 1) {
         const double t = std::floor(std::log(x / lo) / log_span * static_cast<double>(bins));
-        b = static_cast<std::size_t>(std::clamp(t, 0.0, static_cast<double>(bins - 1)));
+        b = t > 0 ? (t < static_cast<double>(bins - 1) ? static_cast<std::size_t>(t) : bins - 1) : 0;  // NaN: 0
         // The computed index may be off by one at a bin edge: settle on the bounds.
         while (b > 0 && x < s.histogram[b].lo) {
           --b;
@@ -531,7 +575,7 @@ SizeStats measure_sizes(std::span<const double> radii, const RadiusDistribution*
       HistogramBin& bin = s.histogram[b];
       ++bin.count;
       bin.achieved_number += 1 / static_cast<double>(n);
-      bin.achieved_area += x * x / total_area;
+      bin.achieved_area += weight(x, k) / total_area;
     }
     if (requested != nullptr) {
       for (std::size_t b = 0; b < bins; ++b) {
@@ -546,7 +590,58 @@ SizeStats measure_sizes(std::span<const double> radii, const RadiusDistribution*
   return s;
 }
 
+namespace {
+
+// measure() on the domain and the disks scaled by k (a power of two > 1: exact), with the lengths
+// and areas it reports scaled back: for lengths so small that their squares underflow.
+PackingStats measure_scaled(const Domain& domain, std::span<const Disk> disks, const StatsOptions& options,
+                            double k) {
+  std::vector<Polygon> polygons = domain.polygons();
+  const auto scale_ring = [k](Ring& ring) {
+    for (Point& p : ring) {
+      p = {p.x * k, p.y * k};
+    }
+  };
+  for (Polygon& polygon : polygons) {
+    scale_ring(polygon.outer);
+    for (Ring& hole : polygon.holes) {
+      scale_ring(hole);
+    }
+  }
+  std::vector<Disk> scaled(disks.begin(), disks.end());
+  for (Disk& d : scaled) {
+    d = Disk{{d.centre.x * k, d.centre.y * k}, d.radius * k};
+  }
+  StatsOptions o = options;
+  o.contact_gap *= k;
+  o.band_width *= k;
+  PackingStats s = measure(Domain::from_polygons(std::move(polygons)), scaled, o);
+  const double inv = 1 / k;
+  s.domain_area = domain.area();
+  s.disk_area = 0;
+  std::vector<double> radii;
+  radii.reserve(disks.size());
+  for (const Disk& d : disks) {
+    radii.push_back(d.radius);
+    s.disk_area += std::numbers::pi * d.radius * d.radius;
+  }
+  s.band_width *= inv;
+  s.contact_gap *= inv;
+  s.max_overlap *= inv;
+  s.interior_area *= inv * inv;
+  s.band_area *= inv * inv;
+  s.band_median_area *= inv;
+  s.inside_median_area *= inv;
+  s.sizes =
+      measure_sizes(radii, options.requested ? &options.requested->distribution() : nullptr, options.histogram_bins);
+  return s;
+}
+
+}  // namespace
+
 PackingStats measure(const Domain& domain, std::span<const Disk> disks, const StatsOptions& options) {
+  double largest = 0;  // |coordinate| or radius
+  double largest_radius = 0;
   for (std::size_t k = 0; k < disks.size(); ++k) {
     const Disk& d = disks[k];
     if (!std::isfinite(d.centre.x) || !std::isfinite(d.centre.y) || !std::isfinite(d.radius) || !(d.radius > 0)) {
@@ -554,6 +649,14 @@ PackingStats measure(const Domain& domain, std::span<const Disk> disks, const St
                                   ", radius " + detail::format_double(d.radius) +
                                   ") needs a finite centre and a finite radius > 0");
     }
+    largest = std::max({largest, std::abs(d.centre.x), std::abs(d.centre.y), d.radius});
+    largest_radius = std::max(largest_radius, d.radius);
+  }
+  // A domain and disks so small that areas and squared distances underflow (a domain at 1e-200):
+  // measured at the scale of 1, unless a disk would then overflow.
+  if (const double k = square_safe_scale(domain.max_abs_coordinate() + 5 * largest_radius);
+      k > 1 && std::isfinite(largest * k)) {
+    return measure_scaled(domain, disks, options, k);
   }
   PackingStats s;
   s.disks = disks.size();
@@ -566,13 +669,17 @@ PackingStats measure(const Domain& domain, std::span<const Disk> disks, const St
   }
   s.sizes =
       measure_sizes(radii, options.requested ? &options.requested->distribution() : nullptr, options.histogram_bins);
-  s.packing_fraction = s.disk_area / s.domain_area;
-  s.void_ratio =
-      s.packing_fraction > 0 ? (1 - s.packing_fraction) / s.packing_fraction : std::numeric_limits<double>::infinity();
+  s.packing_fraction = s.disk_area == 0 ? 0 : s.disk_area / s.domain_area;  // (no disk: 0, also where the area underflows)
+  s.void_ratio = !(s.packing_fraction > 0)                ? std::numeric_limits<double>::infinity()
+                 : std::isfinite(s.packing_fraction) ? (1 - s.packing_fraction) / s.packing_fraction
+                                                     : -1.0;  // disk areas beyond the doubles (radii of 1e308)
   const double rmax = s.sizes.rmax;
   s.band_width = options.band_width > 0 ? options.band_width : 2 * rmax;
-  s.contact_gap = options.contact_gap > 0 ? options.contact_gap
-                                          : std::max(1e-9 * rmax, 0x1p-42 * (domain.max_abs_coordinate() + 5 * rmax));
+  s.contact_gap =
+      options.contact_gap > 0
+          ? options.contact_gap
+          : std::max(1e-9 * rmax, 0x1p-42 * std::min(domain.max_abs_coordinate() + 5 * rmax,
+                                                       std::numeric_limits<double>::max()));  // (finite for any radius)
   const double w = s.band_width;
   const EdgeIndex edges(domain, w > 0 ? w : std::sqrt(domain.area()) / 64);
   sample_fractions(domain, disks, edges, w, options.samples, s, options.stop);

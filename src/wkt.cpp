@@ -3,12 +3,11 @@
 #include <algorithm>
 #include <array>
 #include <cctype>
-#include <charconv>
 #include <cmath>
 #include <string>
-#include <system_error>
 
 #include "frontpack/errors.hpp"
+#include "numbers.hpp"
 
 namespace frontpack::detail {
 
@@ -92,7 +91,7 @@ class Parser {
       fail(WktError::Kind::unsupported_geometry,
            "unsupported geometry type " + keyword + ": a domain must be a POLYGON or MULTIPOLYGON", start);
     } else {
-      fail(WktError::Kind::syntax, "expected POLYGON or MULTIPOLYGON, found '" + std::string(word) + "'", start);
+      fail(WktError::Kind::syntax, "expected POLYGON or MULTIPOLYGON, found " + quote_text(word), start);
     }
     skip_space();
     if (pos_ < text_.size()) {
@@ -121,7 +120,8 @@ class Parser {
     return text_.substr(start, pos_ - start);
   }
 
-  // A short description of the token at `offset`, for "found ..." in messages.
+  // The token at `offset`, quoted (quote_text(): at most 40 characters, escaped), for "found ..."
+  // in messages.
   std::string describe_here(std::size_t offset) const {
     if (offset >= text_.size()) {
       return "end of input";
@@ -129,25 +129,14 @@ class Parser {
     std::size_t end = offset;
     if (is_alpha(text_[offset]) || is_digit(text_[offset]) || text_[offset] == '-' || text_[offset] == '+' ||
         text_[offset] == '.') {
-      while (end < text_.size() && end - offset < 24 && !is_space(text_[end]) && text_[end] != '(' &&
-             text_[end] != ')' && text_[end] != ',') {
+      while (end < text_.size() && !is_space(text_[end]) && text_[end] != '(' && text_[end] != ')' &&
+             text_[end] != ',') {
         ++end;
       }
     } else {
       end = offset + 1;
     }
-    std::string quoted(1, '\'');
-    for (const char c : text_.substr(offset, end - offset)) {
-      const auto u = static_cast<unsigned char>(c);
-      if (u < 0x20 || u >= 0x7f) {
-        static constexpr char hex[] = "0123456789ABCDEF";
-        quoted.append("\\x").append(1, hex[u >> 4]).append(1, hex[u & 15]);
-      } else {
-        quoted.push_back(c);
-      }
-    }
-    quoted.push_back('\'');
-    return quoted;
+    return quote_text(text_.substr(offset, end - offset));
   }
 
   static bool is_other_type(const std::string& keyword) {
@@ -268,7 +257,7 @@ class Parser {
       const std::string word = upper(text_.substr(i, end - i));
       if (word == "NAN" || word == "INF" || word == "INFINITY") {
         fail(WktError::Kind::bad_number,
-             "non-finite number '" + std::string(text_.substr(start, end - start)) + "': coordinates must be finite",
+             "non-finite number " + quote_text(text_.substr(start, end - start)) + ": coordinates must be finite",
              start);
       }
       fail(WktError::Kind::syntax, "expected a number, found " + describe_here(start), start);
@@ -305,61 +294,18 @@ class Parser {
     if (i < text_.size() && (is_alpha(text_[i]) || text_[i] == '.')) {
       fail(WktError::Kind::syntax, "malformed number " + describe_here(start), start);
     }
-    // std::from_chars does not take a leading '+'.
+    // parse_decimal() (std::from_chars) does not take a leading '+'. Out of the range of doubles:
+    // refused (numbers.hpp), underflow included (read as 0, it moved a vertex).
     const std::size_t from = text_[start] == '+' ? start + 1 : start;
-    double value = 0.0;
-    const auto [end, ec] = std::from_chars(text_.data() + from, text_.data() + i, value);
-    if (ec == std::errc::result_out_of_range && decimal_order(text_.substr(start, i - start)) < 0) {
-      // Below half the smallest subnormal: the correctly rounded value is zero.
-      pos_ = i;
-      return text_[start] == '-' ? -0.0 : 0.0;
+    const Decimal d = parse_decimal(text_.substr(from, i - from));
+    if (d.status == DecimalStatus::overflow || d.status == DecimalStatus::underflow) {
+      fail(WktError::Kind::bad_number, "number " + out_of_range(text_.substr(start, i - start), d.status), start);
     }
-    if (ec == std::errc::result_out_of_range) {
-      fail(WktError::Kind::bad_number,
-           "number '" + std::string(text_.substr(start, i - start)) + "' is out of the range of a double", start);
-    }
-    if (ec != std::errc{} || end != text_.data() + i) {
+    if (d.status != DecimalStatus::ok) {
       fail(WktError::Kind::syntax, "malformed number " + describe_here(start), start);
     }
     pos_ = i;
-    return value;
-  }
-
-  // The decimal order of magnitude of a well-formed number token (floor(log10 |x|), roughly):
-  // only its sign matters, to tell underflow from overflow.
-  static long decimal_order(std::string_view token) {
-    std::size_t i = 0;
-    if (i < token.size() && (token[i] == '+' || token[i] == '-')) {
-      ++i;
-    }
-    long order = 0;
-    bool seen_nonzero = false;
-    long int_digits = 0;
-    long leading_fraction_zeros = 0;
-    for (; i < token.size() && is_digit(token[i]); ++i) {
-      seen_nonzero = seen_nonzero || token[i] != '0';
-      int_digits += seen_nonzero ? 1 : 0;
-    }
-    if (i < token.size() && token[i] == '.') {
-      for (++i; i < token.size() && is_digit(token[i]); ++i) {
-        if (!seen_nonzero && token[i] == '0') {
-          ++leading_fraction_zeros;
-        }
-        seen_nonzero = seen_nonzero || token[i] != '0';
-      }
-    }
-    order = int_digits > 0 ? int_digits - 1 : -leading_fraction_zeros - 1;
-    if (i < token.size() && (token[i] == 'e' || token[i] == 'E')) {
-      long exponent = 0;
-      const char* first = token.data() + i + 1 + (token[i + 1] == '+' ? 1 : 0);
-      const auto [end, ec] = std::from_chars(first, token.data() + token.size(), exponent);
-      (void)end;
-      if (ec == std::errc::result_out_of_range) {
-        exponent = token[i + 1] == '-' ? -1000000 : 1000000;
-      }
-      order += exponent;
-    }
-    return order;
+    return d.value;
   }
 
   std::string_view text_;

@@ -23,7 +23,9 @@ struct ParsedPolygon {
 };
 
 /// Throws WktError (with offset, line and column) on anything but a 2D POLYGON / MULTIPOLYGON.
-/// Numbers are decoded with correct rounding (std::from_chars).
+/// Numbers are decoded with correct rounding (std::from_chars); one out of the range of doubles,
+/// overflowing or underflowing to 0, is refused (bad_number), as by every reader (numbers.hpp).
+/// Offending tokens are quoted by quote_text() (escaped, at most 40 characters).
 [[nodiscard]] std::vector<ParsedPolygon> parse_wkt(std::string_view text);
 
 /// 1-based line and column of a character offset.

@@ -400,8 +400,34 @@ TEST(ParseRadii, Errors) {
   EXPECT_EQ(msg("uniform:1"), "radius 'uniform:1': uniform takes RMIN,RMAX, got 1 value");
   EXPECT_EQ(msg("uniform:1,x"), "radius 'uniform:1,x': 'x' is not a number (uniform:RMIN,RMAX)");
   EXPECT_EQ(msg("normal:0.1,0.05"),
-            "radius 'normal:0.1,0.05': normal: the default lower bound MEAN - 3 SD = -0.05000000000000002 is not "
-            "> 0; give the bounds: normal:MEAN,SD,LO,HI");
+            "radius 'normal:0.1,0.05': normal: the default lower bound MEAN - 3 SD = -0.05000000000000002 (MEAN "
+            "'0.1', SD '0.05') is not > 0; give the bounds: normal:MEAN,SD,LO,HI");
+  // Bounds the user did not give are named by the numbers given, as written (they were named by a
+  // bound of 0, or of 0.05 twice, that the user never wrote).
+  EXPECT_EQ(msg("lognormal:0.05,1e308"),
+            "radius 'lognormal:0.05,1e308': lognormal: the default lower bound MEDIAN / GSD^3 (MEDIAN '0.05', GSD "
+            "'1e308') underflows to 0; give the bounds: lognormal:MEDIAN,GSD,LO,HI");
+  EXPECT_EQ(msg("lognormal:1e300,1e10"),
+            "radius 'lognormal:1e300,1e10': lognormal: the default upper bound MEDIAN * GSD^3 (MEDIAN '1e300', GSD "
+            "'1e10') overflows to infinity; give the bounds: lognormal:MEDIAN,GSD,LO,HI");
+  EXPECT_EQ(msg("normal:0.05,1e-320"),
+            "radius 'normal:0.05,1e-320': normal: the default bounds MEAN -/+ 3 SD (MEAN '0.05', SD '1e-320') round "
+            "to the same number, 0.05: SD is below the precision of MEAN; give the bounds: normal:MEAN,SD,LO,HI");
+  EXPECT_EQ(msg("normal:1.7e308,1e307"),
+            "radius 'normal:1.7e308,1e307': normal: the default upper bound MEAN + 3 SD (MEAN '1.7e308', SD '1e307') "
+            "overflows to infinity; give the bounds: normal:MEAN,SD,LO,HI");
+  // Numbers out of the range of doubles (the same rule and words as every reader).
+  EXPECT_EQ(msg("constant:1e-400"), "radius 'constant:1e-400': '1e-400' is out of the range of a double (underflows to 0)");
+  EXPECT_EQ(msg("uniform:0.01, 1e400"),
+            "radius 'uniform:0.01, 1e400': '1e400' is out of the range of a double (overflows to infinity)");
+  EXPECT_EQ(msg("discrete:1:0.5,2e-999:0.5"),
+            "radius 'discrete:1:0.5,2e-999:0.5': discrete: item 2: '2e-999' is out of the range of a double "
+            "(underflows to 0)");
+  // A token is quoted escaped and cut to 40 characters.
+  EXPECT_EQ(msg("constant:" + std::string(100, '1') + "x"),
+            "radius 'constant:" + std::string(100, '1') + "x': '" + std::string(40, '1') +
+                "...' (101 characters) is not a number (constant:R)");
+  EXPECT_EQ(msg("constant:1\x1b"), "radius 'constant:1\\x1B': '1\\x1B' is not a number (constant:R)");
   EXPECT_EQ(msg("normal:1,0.1,0.5"), "radius 'normal:1,0.1,0.5': normal takes MEAN,SD or MEAN,SD,LO,HI, got 3 values");
   EXPECT_EQ(msg("uniform:1,2@area"), "radius 'uniform:1,2@area': @ modifiers apply to discrete: and curve: only");
   EXPECT_EQ(msg("discrete:1:0.5,2:0.5@mass"),
@@ -438,6 +464,7 @@ TEST(SizeTable, ReadsAndNamesTheBadLine) {
             "s.csv:1: expected a header 'radius,fraction', 'diameter,fraction', "
             "'radius,passing' or 'diameter,passing', got 'size,passing'");
   EXPECT_EQ(msg("diameter,passing\n1,0\n2,x\n"), "s.csv:3: 'x' is not a number");
+  EXPECT_EQ(msg("diameter,passing\n1,0\n2,1e-400\n"), "s.csv:3: '1e-400' is out of the range of a double (underflows to 0)");
   EXPECT_EQ(msg("diameter,passing\n1,0\n2,0.5,3\n"),
             "s.csv:3: expected SIZE,FRACTION (2 comma-separated numbers), got '2,0.5,3'");
   EXPECT_EQ(msg("diameter,passing\n0.1,0\n0.2,40\n0.4,100\n"),

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
 #include <limits>
 #include <numbers>
@@ -167,6 +168,66 @@ TEST(Hostile, AstronomicalRequestIsRefusedWithTheEstimate) {
     ADD_FAILURE() << "not refused";
   } catch (const fp::LimitError& e) {
     EXPECT_EQ(e.estimate(), std::numeric_limits<std::size_t>::max());
+  }
+}
+
+// A domain whose area and E[r^2] underflow (1e-400 and 1e-402: the disk-count estimate was
+// 0 / 0, a NaN that passed both limit checks and reached a reserve()): an exactly certified
+// packing with every method, disks and all, as at unit scale.
+TEST(Hostile, DomainWhoseAreaUnderflowsIsPacked) {
+  struct Case {
+    const char* wkt;
+    fp::Radii radii;
+  };
+  const Case cases[] = {
+      {"POLYGON((0 0,1e-200 0,1e-200 1e-200,0 1e-200,0 0))", fp::Radii::constant(1e-201)},
+      {"POLYGON((0 0,1e-300 0,1e-300 1e-300,0 1e-300,0 0))", fp::Radii::constant(1e-301)},
+      {"POLYGON((0 0,1e-300 0,1e-300 1e-300,0 1e-300,0 0))", fp::Radii::uniform(1e-302, 1e-301)},
+  };
+  for (const Case& c : cases) {
+    const fp::Domain d = fp::Domain::from_wkt(c.wkt);
+    for (const fp::Method m : {fp::Method::closed, fp::Method::open, fp::Method::boundary}) {
+      SCOPED_TRACE(std::string(c.wkt) + " " + c.radii.describe() + " " + fp::to_string(m));
+      const fp::Packing p = fill(d, m, c.radii);
+      expect_certified(d, p);
+      EXPECT_GE(p.disks.size(), 15U);  // 17 to 58 at unit scale (0.53 to 0.73 of the area)
+      const fp::PackingStats s = fp::measure(d, p.disks);
+      EXPECT_GT(s.packing_fraction, 0.5);  // measured at unit scale too (the areas underflow)
+      EXPECT_LT(s.packing_fraction, 0.91);
+    }
+  }
+}
+
+// Where even a clearance of a few ulps underflows (every coordinate subnormal), the request is
+// refused, saying why.
+TEST(Hostile, SubnormalDomainIsRefusedSayingWhy) {
+  const fp::Domain d = fp::Domain::from_wkt("POLYGON((0 0,4e-320 0,4e-320 4e-320,0 4e-320,0 0))");
+  for (const fp::Method m : {fp::Method::closed, fp::Method::open, fp::Method::boundary}) {
+    SCOPED_TRACE(fp::to_string(m));
+    try {
+      (void)fill(d, m, fp::Radii::constant(1e-321));
+      ADD_FAILURE() << "not refused";
+    } catch (const fp::OptionError& e) {
+      EXPECT_NE(std::string(e.what()).find("too small"), std::string::npos) << e.what();
+    }
+  }
+}
+
+// Radii up to the largest double (5 rmax and the grid's margin of 4 rmax overflow; the boundary
+// method sized its grid from that and ran out of memory): no disk fits the unit square, and every
+// method says so with an empty, certified packing.
+TEST(Hostile, RadiiNearTheLargestDoubleGiveAnEmptyPacking) {
+  const fp::Domain d = fp::Domain::from_wkt("POLYGON((0 0,1 0,1 1,0 1,0 0))");
+  const fp::Radii radii[] = {fp::Radii::constant(3e307), fp::Radii::constant(std::numeric_limits<double>::max()),
+                             fp::Radii::uniform(0.01, 1e308), fp::Radii::uniform(1e200, 1e300)};
+  for (const fp::Radii& r : radii) {
+    for (const fp::Method m : {fp::Method::closed, fp::Method::open, fp::Method::boundary}) {
+      SCOPED_TRACE(r.describe() + " " + fp::to_string(m));
+      const fp::Packing p = fill(d, m, r);
+      expect_certified(d, p);
+      EXPECT_TRUE(p.disks.empty());
+      EXPECT_FALSE(p.truncated);
+    }
   }
 }
 
@@ -423,11 +484,13 @@ TEST(Hostile, StarWithCrowdedEdgeBoxesAndHolesSplittingIt) {
 // 2^-266 and 2^266 (about 1e-80 and 1e80, within the accepted coordinates): the generators'
 // lengths are homogeneous, and tangent_to_two, whose terms are fourth powers of lengths, works at
 // the scale of rmax (LengthScale). Unscaled, those terms underflowed or overflowed there, and the
-// closed form placed under 1% of the disks.
+// closed form placed under 1% of the disks. At 2^-700 and 2^-960 (about 2e-211 and 1e-289) the
+// squares of the overlap tests underflow too: the generators work in the unit of WorkScale there
+// (before, such runs never ended, or were refused with a NaN estimate).
 TEST(Hostile, ScalingByAPowerOfTwoScalesThePackingExactly) {
   const fp::Ring unit{{0, 0}, {1, 0}, {1, 1}, {0, 1}};
   const fp::Domain d = fp::Domain::from_rings(unit);
-  for (const int e : {-266, 266}) {
+  for (const int e : {-266, 266, -700, -960}) {
     fp::Ring scaled;
     for (const fp::Point p : unit) {
       scaled.push_back({std::ldexp(p.x, e), std::ldexp(p.y, e)});

@@ -14,11 +14,13 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <iterator>
 #include <limits>
 #include <sstream>
 #include <string>
 #include <system_error>
+#include <utility>
 #include <vector>
 
 #include "frontpack/frontpack.hpp"
@@ -605,3 +607,78 @@ TEST(IoVtp, StructureAndExactValues) {
 }
 
 }  // namespace
+
+// A line's text in a message is escaped: a NUL byte shows as \0, other control characters as
+// \xNN (a terminal printing the message must not receive them raw), and cut to 40 characters.
+TEST(IoRead, ControlCharactersInALineAreShownEscaped) {
+  const auto what = [](const std::string& text, bool yade) {
+    std::istringstream in(text);
+    try {
+      (void)(yade ? fp::read_yade(in, "d") : fp::read_csv(in, "d"));
+    } catch (const fp::DiskFileError& e) {
+      return std::string(e.what());
+    }
+    return std::string("(no DiskFileError)");
+  };
+  std::string nul = "x,y,r\n1,2";
+  nul += '\0';
+  nul += ",3\n";
+  EXPECT_EQ(what(nul, false), "d:2:3: y '2\\0' is not a number");
+  std::string nul_line = "x,y,r\n1,2";
+  nul_line += '\0';
+  nul_line += "3\n";
+  EXPECT_EQ(what(nul_line, false), "d:2: expected 3 comma-separated numbers, got '1,2\\03'");
+  EXPECT_EQ(what("0 0 0 1\x01\n", true), "d:1:7: radius '1\\x01' is not a number");
+  EXPECT_EQ(what("#format x_y_z_r\n0 0 0 1\x1b[2J\n", true), "d:2:7: radius '1\\x1B[2J' is not a number");
+  const std::string long_field(1000, '9');
+  EXPECT_EQ(what("x,y,r\n1,2," + long_field + "x\n", false),
+            "d:2:5: radius '" + std::string(40, '9') + "...' (1001 characters) is not a number");
+  for (const std::string& m : {what(nul, false), what(nul_line, false), what("0 0 0 1\x01\n", true)}) {
+    for (const char c : m) {
+      EXPECT_GE(static_cast<unsigned char>(c), 0x20) << m;
+    }
+  }
+}
+
+// One rule for decimals out of the range of doubles, with the same words in every reader: WKT,
+// disk files, radius specs and size tables (numbers.hpp, README "Numbers"). Subnormal numbers
+// are kept: they round-trip through the writers (FormatsRoundTripEveryDouble).
+TEST(Numbers, OneRuleAndOneWordingInEveryReader) {
+  const auto what = [](const std::function<void()>& read) {
+    try {
+      read();
+    } catch (const fp::Error& e) {
+      return std::string(e.what());
+    }
+    return std::string("(no error)");
+  };
+  for (const auto& [token, words] : {std::pair<std::string, std::string>{"1e-400", "(underflows to 0)"},
+                                     std::pair<std::string, std::string>{"1e400", "(overflows to infinity)"}}) {
+    const std::string phrase = "'" + token + "' is out of the range of a double " + words;
+    const std::string messages[] = {
+        what([&] { (void)fp::Domain::from_wkt("POLYGON((0 0,1 0,1 1," + token + " 1,0 0))"); }),
+        what([&] {
+          std::istringstream in("x,y,r\n0," + token + ",1\n");
+          (void)fp::read_csv(in, "d.csv");
+        }),
+        what([&] {
+          std::istringstream in("0 0 0 " + token + "\n");
+          (void)fp::read_yade(in, "d.txt");
+        }),
+        what([&] { (void)fp::parse_radii("constant:" + token); }),
+        what([&] { (void)fp::parse_radii("uniform:0.1," + token); }),
+        what([&] { (void)fp::parse_radii("discrete:" + token + ":1"); }),
+        what([&] { (void)fp::parse_radii("curve:1:0," + token + ":1"); }),
+        what([&] { (void)fp::parse_size_table("diameter,passing\n1,0\n" + token + ",1\n", "sieve.csv"); }),
+    };
+    for (const std::string& m : messages) {
+      EXPECT_NE(m.find(phrase), std::string::npos) << m;
+    }
+  }
+  std::istringstream in("x,y,r\n1e-310,5e-324,2.5e-324\n");
+  const std::vector<fp::Disk> d = fp::read_csv(in, "d.csv");
+  ASSERT_EQ(d.size(), 1U);
+  EXPECT_EQ(d[0].centre.x, 1e-310);
+  EXPECT_EQ(d[0].centre.y, std::numeric_limits<double>::denorm_min());
+  EXPECT_EQ(d[0].radius, std::numeric_limits<double>::denorm_min());
+}

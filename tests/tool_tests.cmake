@@ -172,6 +172,18 @@ frontpack_tool_check(render_bad_width 5 "--width 3: expected 16 to 16384 pixels"
 frontpack_tool_check(render_malformed 7 "malformed_line\\.csv:4:"
   NO_FILES ${TOOL_OUT}/render_malformed/u.png ARGS render ${SQ} ${TD}/malformed_line.csv -o ${TOOL_OUT}/render_malformed/u.png)
 frontpack_tool_check(render_unwritable 2 "cannot write '/nonexistent/dir/u\\.png'" ARGS render ${SQ} ${TD}/good.csv -o /nonexistent/dir/u.png)
+# Disks far larger than the picture, or far outside it: Cairo drew their whole arcs (radius 1e308:
+# past 60 s; 1e20: 15 s). Only the part inside the picture is drawn now: well under a second
+# (the time limit leaves room for the sanitizer build and a busy machine).
+set(O ${TOOL_OUT}/render_huge_radii)
+frontpack_tool_check(render_huge_radii 0 "u\\.png \\(png, 300 x ${square_300_height}, 11 disks\\).*u\\.svg.*u\\.pdf"
+  PNG ${O}/u.png 300 ${square_300_height} FILES ${O}/u.svg ${O}/u.pdf
+  ARGS render ${SQ} ${TD}/huge_radii.csv -o ${O}/u.png -o ${O}/u.svg -o ${O}/u.pdf --width 300 --radius uniform:0.1,1e308)
+set_tests_properties(tool.render_huge_radii PROPERTIES TIMEOUT 20)
+frontpack_tool_check(stats_huge_radii 0 "disks: +11 .*radii: +min 1e-05, .*max 1e\\+308"
+  ARGS stats ${SQ} ${TD}/huge_radii.csv --samples 10000)
+frontpack_tool_check(check_huge_radii 6 "outside: +6 disks .*overlaps: "
+  ARGS check ${SQ} ${TD}/huge_radii.csv)
 frontpack_tool_check(render_help 0 "Example:.*frontpack render shapes/plate_with_holes.wkt packing.csv -o packing.png" ARGS render --help)
 
 # stats: the statistics module on a hand-made file.
@@ -183,6 +195,33 @@ frontpack_tool_check(stats_malformed 7 "malformed_line\\.csv:4:" ARGS stats ${SQ
 frontpack_tool_check(fill_json_unwritable 2 "cannot write '/nonexistent/dir/s\\.json'"
   NO_FILES ${TOOL_OUT}/fill_json_unwritable/p.csv
   ARGS fill ${S}/l_shape.wkt -o ${TOOL_OUT}/fill_json_unwritable/p.csv --json /nonexistent/dir/s.json)
+
+# Extreme numbers (issue #27). A domain whose area and whose disk-count estimate underflow (the
+# estimate was 0 / 0, which passed both limits and reached a reserve(): exit 70) packs as at unit
+# scale with every method; one where every coordinate is subnormal is refused, saying why. (Radii
+# up to the largest double, which gave the boundary method exit 70, leave no disk:
+# Hostile.RadiiNearTheLargestDoubleGiveAnEmptyPacking.)
+foreach(m closed open boundary)
+  frontpack_tool_test(fill_underflowing_area_${m} 0
+    "disks: +[1-9][0-9]* .*fraction: +0\\.[5-8].*certificate: certified: [0-9]+ generated, [0-9]+ culled .*, 0 dropped"
+    fill --wkt "POLYGON((0 0,1e-300 0,1e-300 1e-300,0 1e-300,0 0))" --radius constant:1e-301 --method ${m})
+endforeach()
+frontpack_tool_test(fill_subnormal_domain 5 "the domain and the radii are too small"
+  fill --wkt "POLYGON((0 0,4e-320 0,4e-320 4e-320,0 4e-320,0 0))" --radius constant:1e-321)
+
+# One rule for numbers out of the range of doubles, with the same words in every reader; the
+# offending text quoted escaped and cut to 40 characters (issue #27).
+frontpack_tool_test(wkt_underflow 3 "number '1e-400' is out of the range of a double \\(underflows to 0\\)"
+  info --wkt "POLYGON((0 0,1 0,1 1,1e-400 1,0 0))")
+frontpack_tool_test(fill_radius_underflow 5 "radius 'constant:1e-400': '1e-400' is out of the range of a double \\(underflows to 0\\)"
+  fill ${SQ} --radius constant:1e-400)
+frontpack_tool_test(fill_radius_overflow 5 "'1e400' is out of the range of a double \\(overflows to infinity\\)"
+  fill ${SQ} --radius uniform:0.1,1e400)
+frontpack_tool_test(fill_lognormal_default_bounds 5
+  "the default lower bound MEDIAN / GSD\\^3 \\(MEDIAN '0\\.05', GSD '1e308'\\) underflows to 0; give the bounds"
+  fill ${SQ} --radius lognormal:0.05,1e308)
+frontpack_tool_test(check_nul_byte 7 "nul_byte\\.csv:2:5: y '0\\.5\\\\0' is not a number"
+  check ${SQ} ${CMAKE_CURRENT_SOURCE_DIR}/data/tool/nul_byte.csv)
 
 # Files and signals, as a user meets them (tests/tool/files_and_signals.py): /dev/stdout, devices,
 # FIFOs and symlinks; a file given for two uses; SIGINT, SIGTERM and SIGHUP in every phase; fills

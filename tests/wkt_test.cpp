@@ -1,7 +1,9 @@
 // The WKT reader: what it accepts, and where it says the text is wrong.
 #include <gtest/gtest.h>
 
+#include <limits>
 #include <string>
+#include <utility>
 
 #include "frontpack/frontpack.hpp"
 
@@ -140,4 +142,50 @@ TEST(Wkt, FileErrorsNameTheFile) {
     EXPECT_EQ(e.path(), "/nonexistent/frontpack/domain.wkt");
     EXPECT_NE(std::string(e.what()).find("No such file"), std::string::npos) << e.what();
   }
+}
+
+// One rule for decimals out of the range of doubles, in every reader (README, "Numbers"): refused
+// with the token named, whether they overflow or underflow. Read as 0, "1e-400" used to move a
+// vertex silently. Subnormal numbers are doubles and are kept; zero written any way is zero.
+TEST(Wkt, NumbersOutOfTheDoubleRangeAreRefused) {
+  const std::pair<std::string, std::string> refused[] = {
+      {"POLYGON((0 0,1 0,1 1,1e-400 1,0 0))", "number '1e-400' is out of the range of a double (underflows to 0)"},
+      {"POLYGON((0 0,1 0,1 1,-2.4e-324 1,0 0))",
+       "number '-2.4e-324' is out of the range of a double (underflows to 0)"},
+      {"POLYGON((0 0,1 0,1 1,0.0001e-320 1,0 0))",
+       "number '0.0001e-320' is out of the range of a double (underflows to 0)"},
+      {"POLYGON((0 0,1 0,1 1,0 1e-99999999999999999999,0 0))",
+       "number '1e-99999999999999999999' is out of the range of a double (underflows to 0)"},
+      {"POLYGON((0 0,+1e400 0,1 1,0 0))", "number '+1e400' is out of the range of a double (overflows to infinity)"},
+      {"POLYGON((0 0,1 0,1 1,0 1e99999999999999999999,0 0))",
+       "number '1e99999999999999999999' is out of the range of a double (overflows to infinity)"},
+  };
+  for (const auto& [text, message] : refused) {
+    SCOPED_TRACE(text);
+    const fp::WktError e = wkt_error(text);
+    EXPECT_EQ(e.kind(), fp::WktError::Kind::bad_number);
+    EXPECT_EQ(e.detail(), message);
+  }
+  const fp::Domain subnormal = fp::Domain::from_wkt("POLYGON((0 0,1 0,1 1,2.5e-324 1,0 0))");
+  EXPECT_EQ(subnormal.polygons()[0].outer[3].x, std::numeric_limits<double>::denorm_min());
+  const fp::Domain zeros = fp::Domain::from_wkt("POLYGON((0e-500 -0.0e-9999,1 0,1 1,0.000 1,0 0))");
+  EXPECT_EQ(zeros.area(), 1.0);
+}
+
+// A bad token is quoted escaped and cut to 40 characters, with its length: a 200,000-digit
+// number was echoed whole.
+TEST(Wkt, MessagesQuoteAtMost40CharactersOfAToken) {
+  const std::string digits(200000, '7');
+  const fp::WktError number = wkt_error("POLYGON((0 0,1 0,1 " + digits + ",0 0))");
+  EXPECT_EQ(number.detail(), "number '" + std::string(40, '7') +
+                                 "...' (200000 characters) is out of the range of a double (overflows to infinity)");
+  const fp::WktError word = wkt_error(std::string(100000, 'Q') + "((0 0,1 0,1 1,0 0))");
+  EXPECT_EQ(word.detail(), "expected POLYGON or MULTIPOLYGON, found '" + std::string(40, 'Q') + "...' (100000 characters)");
+  const fp::WktError junk = wkt_error("POLYGON((0 0,1 0,1 1." + std::string(5000, '5') + ".\x01,0 0))");
+  EXPECT_EQ(junk.detail(), "malformed number '1." + std::string(38, '5') + "...' (5004 characters)");
+  for (const fp::WktError& e : {number, word, junk}) {
+    EXPECT_LT(std::string(e.what()).size(), 200U) << e.what();
+  }
+  const fp::WktError control = wkt_error("POLYGON((0 0,1 0,1 1\x01\x1b[2J,0 0))");
+  EXPECT_NE(control.detail().find("'\\x01'"), std::string::npos) << control.detail();
 }

@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <limits>
 #include <memory>
 #include <numbers>
 #include <ostream>
@@ -141,8 +142,72 @@ struct ColourScale {
   [[nodiscard]] static Rgb colour(std::size_t level) { return viridis((static_cast<double>(level) + 0.5) / kLevels); }
 };
 
+// The picture's rectangle in domain coordinates, grown by `pad` pixels on every side.
+struct Frame {
+  double x0, x1, y0, y1;
+};
+
+Frame frame_of(const View& view, double width, double height, double pad) {
+  return {view.x0 + (-pad - view.margin) / view.scale, view.x0 + (width + pad - view.margin) / view.scale,
+          view.y0 + (view.height - view.margin - height - pad) / view.scale,
+          view.y0 + (view.height - view.margin + pad) / view.scale};
+}
+
+// How a disk meets the frame, decided in domain coordinates (where every disk read is finite;
+// in pixels a disk of radius 1e308 is infinite). `big`: its radius is at least the frame's
+// diagonal, so that a disk meeting the frame in part has its centre outside it.
+enum class Reach { none, part, covers };
+Reach reach(const frontpack::Disk& d, const Frame& f) {
+  const double cx = d.centre.x;
+  const double cy = d.centre.y;
+  const double near = std::hypot(std::max({f.x0 - cx, 0.0, cx - f.x1}), std::max({f.y0 - cy, 0.0, cy - f.y1}));
+  if (!(near <= d.radius)) {
+    return Reach::none;
+  }
+  const double far = std::hypot(std::max(cx - f.x0, f.x1 - cx), std::max(cy - f.y0, f.y1 - cy));
+  return far <= d.radius ? Reach::covers : Reach::part;
+}
+
+// The part in frame f of a disk of radius r (domain units) at least as large as the frame's
+// diagonal, its centre c outside the frame: the annular sector between r and a radius short of
+// the frame, over the angles the frame spans seen from c (less than half a turn), the arc in 128
+// chords (each deviates from it by less than a thousandth of a pixel). Cairo's own arc of such a
+// radius has millions of segments (a disk of radius 1e20 took 25 s). Where c and r are far
+// larger than the frame the arc's position within it carries their rounding error (a domain
+// unit in 2^52 of |c|), which no drawing could avoid; its points are kept within a few frames of
+// the picture so that Cairo never sees a coordinate beyond its fixed-point range.
+void huge_disk_path(cairo_t* cr, const View& view, frontpack::Point c, double r, const Frame& f, double extent_px) {
+  const double base = std::atan2((f.y0 + f.y1) / 2 - c.y, (f.x0 + f.x1) / 2 - c.x);
+  const double ux = std::cos(base);
+  const double uy = std::sin(base);
+  double lo = 0;
+  double hi = 0;
+  for (const auto& [x, y] : {std::pair{f.x0, f.y0}, std::pair{f.x1, f.y0}, std::pair{f.x1, f.y1}, std::pair{f.x0, f.y1}}) {
+    const double px = x - c.x;
+    const double py = y - c.y;
+    const double a = std::atan2(ux * py - uy * px, ux * px + uy * py);
+    lo = std::min(lo, a);
+    hi = std::max(hi, a);
+  }
+  const double near = std::hypot(std::max({f.x0 - c.x, 0.0, c.x - f.x1}), std::max({f.y0 - c.y, 0.0, c.y - f.y1}));
+  const double inner = std::max(0.0, near - std::hypot(f.x1 - f.x0, f.y1 - f.y0));
+  const auto to = [&](double radius, double angle) {
+    const double x = std::clamp(view.x(c.x + radius * std::cos(angle)), -2 * extent_px, 3 * extent_px);
+    const double y = std::clamp(view.y(c.y + radius * std::sin(angle)), -2 * extent_px, 3 * extent_px);
+    cairo_line_to(cr, std::isnan(x) ? 0 : x, std::isnan(y) ? 0 : y);
+  };
+  constexpr int kChords = 128;
+  cairo_new_sub_path(cr);
+  for (int i = 0; i <= kChords; ++i) {
+    to(r, base + lo + (hi - lo) * i / kChords);
+  }
+  to(inner, base + hi);
+  to(inner, base + lo);
+  cairo_close_path(cr);
+}
+
 void draw(cairo_t* cr, const View& view, Picture format, const frontpack::Domain& domain,
-          std::span<const frontpack::Disk> disks, int width_px) {
+          std::span<const frontpack::Disk> disks, int width_px, int height_px) {
   cairo_set_source_rgb(cr, 1, 1, 1);
   cairo_paint(cr);
 
@@ -191,6 +256,11 @@ void draw(cairo_t* cr, const View& view, Picture format, const frontpack::Domain
   const double outline_from = 4 * outline_width;  // outline disks at least 8 outline widths across
   // Outlines are drawn as a dark disk under a slightly smaller coloured one: two fills, which
   // Cairo rasterises several times faster than a stroke.
+  // Only what meets the picture is drawn (a disk far outside the domain is skipped), and a disk
+  // larger than the picture is drawn as the part of it inside (frame_of(), reach()).
+  const double pad = 2 * outline_width + 2;
+  const Frame frame = frame_of(view, width_px, height_px, pad);
+  const double extent = width_px + height_px;  // at least the frame's diagonal, in pixels
   const auto disk_path = [&](std::size_t b, std::size_t e, bool outline_pass) {
     cairo_new_path(cr);
     bool any = false;
@@ -204,14 +274,33 @@ void draw(cairo_t* cr, const View& view, Picture format, const frontpack::Domain
       if (!outline_pass && outlined) {
         r -= outline_width;
       }
+      if (!(r <= extent)) {  // (in pixels, its radius or centre may be infinite: decided in domain units)
+        const frontpack::Disk shown{d.centre, outline_pass || !outlined ? d.radius : d.radius - outline_width / view.scale};
+        const Reach where = reach(shown, frame);
+        if (where == Reach::none) {
+          continue;
+        }
+        any = true;
+        if (where == Reach::covers) {
+          cairo_rectangle(cr, -pad, -pad, width_px + 2 * pad, height_px + 2 * pad);
+        } else {
+          huge_disk_path(cr, view, d.centre, shown.radius, frame, extent);
+        }
+        continue;
+      }
+      const double x = view.x(d.centre.x);
+      const double y = view.y(d.centre.y);
+      if (!(x + r >= -pad && x - r <= width_px + pad && y + r >= -pad && y - r <= height_px + pad)) {
+        continue;  // its box misses the picture (also a centre beyond the doubles in pixels)
+      }
       any = true;
       if (raster && r < 1) {
         // Below a pixel a square of the same area looks the same and is much cheaper.
         const double h = 0.5 * std::sqrt(std::numbers::pi) * r;
-        cairo_rectangle(cr, view.x(d.centre.x) - h, view.y(d.centre.y) - h, 2 * h, 2 * h);
+        cairo_rectangle(cr, x - h, y - h, 2 * h, 2 * h);
       } else {
         cairo_new_sub_path(cr);
-        cairo_arc(cr, view.x(d.centre.x), view.y(d.centre.y), r, 0, 2 * std::numbers::pi);
+        cairo_arc(cr, x, y, r, 0, 2 * std::numbers::pi);
       }
     }
     return any;
@@ -344,20 +433,26 @@ Panel make_panel(std::span<const frontpack::Disk> disks, const RenderOptions& op
   bins = std::min(bins, static_cast<std::size_t>(std::max(1, options.width_px / 8)));
   if (!(hi > lo)) {
     lo *= 0.9;
-    hi *= 1.1;
+    hi = hi < std::numeric_limits<double>::max() / 1.1 ? hi * 1.1 : std::numeric_limits<double>::max();
     bins |= 1;
   }
   for (std::size_t b = 0; b <= bins; ++b) {
     panel.edges.push_back(b == bins ? hi : lo + (hi - lo) * static_cast<double>(b) / static_cast<double>(bins));
   }
   panel.achieved.assign(bins, 0.0);
+  // Areas r^2 at a scale k (a power of two) where they neither overflow nor underflow: 1 but for
+  // radii beyond 2^400 (a disk of radius 1e308 made the total infinite and its share a NaN) or
+  // below 2^-400.
+  const double k = hi > 0x1p400 || hi < 0x1p-400 ? std::ldexp(1.0, -std::clamp(std::ilogb(hi), -1000, 1000)) : 1.0;
+  const auto area = [k](double r) { return (r * k) * (r * k); };
   double total = 0;
   for (const double r : radii) {
-    total += r * r;
+    total += area(r);
   }
   for (const double r : radii) {
     const double t = std::floor((r - lo) / (hi - lo) * static_cast<double>(bins));
-    auto b = static_cast<std::size_t>(std::clamp(t, 0.0, static_cast<double>(bins - 1)));
+    // (NaN-safe: the conversion of a NaN is undefined.)
+    auto b = t > 0 ? (t < static_cast<double>(bins - 1) ? static_cast<std::size_t>(t) : bins - 1) : std::size_t{0};
     // The computed index may be off by one at an edge: settle on the edges themselves.
     while (b > 0 && r < panel.edges[b]) {
       --b;
@@ -365,7 +460,7 @@ Panel make_panel(std::span<const frontpack::Disk> disks, const RenderOptions& op
     while (b + 1 < bins && r >= panel.edges[b + 1]) {
       ++b;
     }
-    panel.achieved[b] += r * r / total;
+    panel.achieved[b] += area(r) / total;
   }
   if (request != nullptr) {
     // Mass at an edge belongs to the bin above it, as for the disks.
@@ -629,7 +724,7 @@ void render(frontpack::OutputFile& out, Picture format, const frontpack::Domain&
   check(cairo_surface_status(surface.get()), path);
   {
     const Context cr(cairo_create(surface.get()));
-    draw(cr.get(), view, format, domain, disks, width);
+    draw(cr.get(), view, format, domain, disks, width, height);
     if (options.stop.stop_requested()) {
       throw frontpack::CancelledError();
     }

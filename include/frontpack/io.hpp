@@ -127,8 +127,10 @@ void write_file(const std::filesystem::path& path, Format format, const Domain& 
 /// exactly three comma-separated numbers per line (spaces or tabs around a number are allowed;
 /// CRLF line ends are accepted; no blank lines); every number finite; every radius > 0. Numbers
 /// are parsed exactly and independently of the locale (std::from_chars: "1.5", "-2e-3", no "+").
-/// `source_name` (a file name; "<input>" if empty) goes into the messages. Throws DiskFileError naming
-/// the line.
+/// A number out of the range of doubles is refused, whether it overflows ("1e400") or underflows
+/// to 0 ("1e-400"); subnormal values ("5e-324") are read (README, "Numbers"). `source_name` (a
+/// file name; "<input>" if empty) goes into the messages, and the offending text, escaped (a NUL
+/// byte shows as \0) and cut to 40 characters. Throws DiskFileError naming the line.
 [[nodiscard]] std::vector<Disk> read_csv(std::istream& in, std::string_view source_name);
 
 /// Reads Yade text as written by write_yade: lines of four numbers "x y z r" separated by spaces

@@ -4,6 +4,7 @@
 
 #include <cstdio>
 #include <cstdlib>
+#include <string>
 
 namespace frontpack::fuzz {
 
@@ -12,6 +13,19 @@ inline void check(bool ok, const char* what) {
     std::fprintf(stderr, "frontpack fuzz: guarantee broken: %s\n", what);
     std::abort();
   }
+}
+
+/// What a reader's error message must be, whatever the input: a line of printable text (the
+/// user's text quoted escaped, a NUL byte as \0) of bounded length (the user's text cut to 40
+/// characters), so that it can be printed to a terminal or a log as it is.
+inline void check_message(const std::string& message) {
+  bool printable = true;
+  for (const char c : message) {
+    const auto u = static_cast<unsigned char>(c);
+    printable = printable && u >= 0x20 && u != 0x7f;
+  }
+  check(printable, "an error message carries no control character (the user's text is escaped)");
+  check(message.size() <= 512, "an error message quotes at most 40 characters of the user's text");
 }
 
 }  // namespace frontpack::fuzz

@@ -25,7 +25,8 @@ void one(const std::string& text, Read read, Write write) {
   try {
     std::istringstream in(text);
     disks = read(in, "fuzz");
-  } catch (const Error&) {
+  } catch (const Error& e) {
+    check_message(e.what());
     return;  // DiskFileError (or another typed error): what bad input must get
   }
   for (const Disk& d : disks) {

@@ -30,7 +30,8 @@ void wkt(const std::uint8_t* data, std::size_t size) {
   std::optional<Domain> parsed;
   try {
     parsed.emplace(Domain::from_wkt(text));
-  } catch (const Error&) {
+  } catch (const Error& e) {
+    check_message(e.what());
     return;  // a clear, typed error: what bad input must get
   }
   const Domain& domain = *parsed;
