@@ -122,7 +122,7 @@ TEST(TouchingRings, CheckerboardOfHolesDisconnectsTheInterior) {
 
 // Holes along every third diagonal touch their diagonal neighbours at corners: chains, no loop.
 TEST(TouchingRings, DiagonalChainsOfTouchingHolesAreValid) {
-  const int n = 32;
+  const int n = 64;
   const auto on_chain = [](int i, int j) { return ((j - i) % 3 + 3) % 3 == 0; };
   const fp::Polygon p = board_with_holes(n, on_chain);
   const fp::Domain d = fp::Domain::from_polygons({p});
