@@ -181,6 +181,25 @@ void BM_RejectCheckerboardOfHoles(benchmark::State& state) {
 }
 BENCHMARK(BM_RejectCheckerboardOfHoles)->Arg(128)->Unit(benchmark::kMillisecond);
 
+// n thin triangles as a multipolygon, all with a vertex at the origin (n = 8,192: 24,576
+// vertices): their edges there meet in n^2 pairs, and sorting them by angle about the point
+// replaces classifying the pairs (validate.cpp, find_hubs(); about 70 s before at n = 8,192).
+void BM_ValidateFan(benchmark::State& state) {
+  const auto n = static_cast<int>(state.range(0));
+  std::vector<fp::Polygon> parts;
+  for (int k = 0; k < n; ++k) {
+    const double a = 2 * std::numbers::pi * k / n;
+    const double b = 2 * std::numbers::pi * (k + 0.5) / n;
+    parts.push_back({{{0, 0}, {std::cos(a), std::sin(a)}, {std::cos(b), std::sin(b)}}, {}});
+  }
+  for (auto _ : state) {
+    fp::Domain d = fp::Domain::from_polygons(parts);
+    benchmark::DoNotOptimize(d);
+  }
+  state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(3 * parts.size()));
+}
+BENCHMARK(BM_ValidateFan)->Arg(8192)->Unit(benchmark::kMillisecond);
+
 void BM_ContainsBatch(benchmark::State& state) {
   const fp::Domain d = fp::Domain::from_wkt(big_polygon_wkt(static_cast<std::size_t>(state.range(0)), 16));
   const std::vector<fp::Disk> disks = disks_over(d.bbox(), static_cast<std::size_t>(state.range(1)));

@@ -326,6 +326,15 @@ bool EdgeGrid::contains(const Disk& disk) const {
   return true;
 }
 
+std::size_t EdgeGrid::ray_cost(Point p) const noexcept {
+  if (!(p.y >= ys_.front() && p.y < ys_.back()) || !(p.x < xs_.back())) {
+    return 0;
+  }
+  const std::size_t i = column(p.x);
+  const std::size_t j = row(p.y);
+  return (nx_ - i) + (cell_start_[cell(0, j) + nx_] - cell_start_[cell(i, j)]);
+}
+
 void EdgeGrid::edges_crossing_ray(Point p, std::vector<std::uint32_t>& out) const {
   if (!(p.y >= ys_.front() && p.y < ys_.back()) || !(p.x < xs_.back())) {
     return;

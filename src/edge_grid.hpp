@@ -40,6 +40,10 @@ class EdgeGrid {
   /// skipped: the caller must not rely on them. Each edge appears at most once.
   void edges_crossing_ray(Point p, std::vector<std::uint32_t>& out) const;
 
+  /// The work edges_crossing_ray(p) would do: the cells right of p in its row and the edges they
+  /// list. O(1).
+  [[nodiscard]] std::size_t ray_cost(Point p) const noexcept;
+
  private:
   static constexpr std::uint8_t kOutside = 0;
   static constexpr std::uint8_t kMixed = 1;

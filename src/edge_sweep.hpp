@@ -1,8 +1,6 @@
-// Whether the edges of a set of rings meet anywhere but at the vertex consecutive edges share:
-// a sweep over all of them in exact arithmetic (CGAL::do_curves_intersect), for the validator
-// (validate.cpp) when the edges' boxes meet in too many pairs to classify one by one. In a
-// translation unit of its own: the sweep's headers are heavy, and GCC 12 warns falsely inside
-// them (edge_sweep.cpp).
+// Whether the edges of a set of rings meet anywhere but at common endpoints: a sweep over all of
+// them in exact arithmetic, for the validator (validate.cpp) when the edges' boxes meet in too many
+// pairs to classify one by one.
 #pragma once
 
 #include <cstdint>
@@ -13,9 +11,8 @@
 namespace frontpack::detail {
 
 /// True if no two of the edges v[e] -> v[next[e]] have a common point in the interior of either
-/// (no crossing, no overlap, no vertex on another edge's interior). Edges sharing an endpoint are
-/// not reported: the caller checks separately that no two vertices lie at the same point.
-/// Every edge must have two distinct endpoints.
+/// (no crossing, no overlap, no vertex on another edge's interior): edges may share endpoints, as
+/// many as meet there. Every edge must have two distinct endpoints. O(n log n).
 [[nodiscard]] bool edge_interiors_disjoint(const std::vector<Point>& v, const std::vector<std::uint32_t>& next);
 
 }  // namespace frontpack::detail

@@ -3,12 +3,14 @@
 // Why not CGAL::is_valid_polygon_with_holes: its hole test is quadratic in practice (measured
 // 18-24 s for 30k edges, 459 s for 100k, see shared/design.md) and it prints. Here every pair of
 // edges whose boxes meet is found by CGAL::box_self_intersection_d and classified with exact
-// orientation tests; ring nesting is decided by a plane sweep that finds each ring's innermost
-// enclosing ring (ring_tree.cpp, exact orientation tests); and the connectivity of each polygon's
-// interior follows from the graph of touching rings. Where the edges' boxes meet in far more pairs
-// than there are edges (long edges fanning around a common region, as in a star with thousands of
-// spikes) and none of them has shown a problem or a touch, a sweep (CGAL::do_curves_intersect,
-// O(n log n)) decides whether any pair would.
+// orientation tests; ring nesting is decided by exact ray parity through the edge grid, or where
+// that would be quadratic by a plane sweep that finds each ring's innermost enclosing ring
+// (ring_tree.cpp, exact orientation tests); and the connectivity of each polygon's interior
+// follows from the graph of touching rings. Where the edges' boxes meet in far more pairs than
+// there are edges (long edges fanning around a common region, as in a star with thousands of
+// spikes) and none of them has shown a problem or a touch, a sweep (edge_sweep.cpp, O(n log n))
+// decides whether any pair would. Points where the vertices of many rings meet (hubs) are
+// classified by sorting their edges by angle, not pair by pair (find_hubs()).
 
 #include <CGAL/Bbox_2.h>
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
@@ -252,6 +254,9 @@ class Validator {
   //   are looked for first, in one pass over the edges.
   // - The pass over all box pairs stops once it has classified a budget of pairs with a problem
   //   in hand. The smallest key is then found by ordered_search().
+  // Pairs of edges that end at a common point where vertices of several rings meet (hubs) are
+  // left to find_hubs(): k rings meeting at a point make k^2 such pairs (a fan of 8,192 parts
+  // around one point, 130 million), and the box pass only counts them.
   void check_edge_pairs() {
     for (std::uint32_t e = 0; e < rs_.v.size(); ++e) {
       classify(e, rs_.next[e]);  // consecutive edges: a problem there is a spike (rank 0)
@@ -259,6 +264,7 @@ class Validator {
     if (problem_) {
       throw_problem();
     }
+    find_hubs();
     std::vector<EdgeBox> boxes;
     boxes.reserve(rs_.v.size());
     for (std::uint32_t e = 0; e < rs_.v.size(); ++e) {
@@ -273,7 +279,7 @@ class Validator {
       std::size_t pairs = 0;
       try {
         CGAL::box_self_intersection_d(boxes.begin(), boxes.end(), [&](const EdgeBox& x, const EdgeBox& y) {
-          classify(edge_of(x), edge_of(y));
+          classify_unless_hub(edge_of(x), edge_of(y));
           ++pairs;
           if (pairs > budget && problem_) {
             throw Budget{};
@@ -306,19 +312,11 @@ class Validator {
   struct Budget {};
   struct Crowded {};
 
-  // Whether the edges meet only where consecutive edges share their vertex: no two vertices at
-  // the same point (a ring touching itself or another ring there), and no two edges with a
-  // common point in the interior of either (a crossing, an overlap, a vertex on another edge),
-  // by a sweep over the edges in exact arithmetic. Then the pairwise classification finds no
-  // problem and no touch.
-  [[nodiscard]] bool edges_disjoint() const {
-    std::vector<Point> at(rs_.v.begin(), rs_.v.end());
-    std::sort(at.begin(), at.end(), point_less);
-    if (std::adjacent_find(at.begin(), at.end()) != at.end()) {
-      return false;
-    }
-    return edge_interiors_disjoint(rs_.v, rs_.next);
-  }
+  // Whether the edges meet only at their endpoints: no two edges with a common point in the
+  // interior of either (a crossing, an overlap, a vertex on another edge), by a sweep over the
+  // edges in exact arithmetic. Then the pairwise classification finds no problem and no touch
+  // but at hubs, which find_hubs() has dealt with.
+  [[nodiscard]] bool edges_disjoint() const { return edge_interiors_disjoint(rs_.v, rs_.next); }
   static std::size_t pair_budget(std::size_t edges) { return 64 * edges + (std::size_t{1} << 20); }
 
   // With a problem in hand (problem_), the one with the smallest key: the pairs whose smaller edge
@@ -346,7 +344,7 @@ class Validator {
       const std::size_t budget = pair_budget(n - lo);
       std::size_t pairs = 0;
       const auto visit = [&](const EdgeBox& x, const EdgeBox& y) {
-        classify(edge_of(x), edge_of(y));
+        classify_unless_hub(edge_of(x), edge_of(y));
         if (++pairs > budget) {
           throw Budget{};
         }
@@ -365,6 +363,144 @@ class Validator {
       lo = hi;
       size *= 2;
     }
+  }
+
+  // An edge leaving a hub: edge `edge` joins the hub's vertex `vertex` to the point `to`.
+  struct Spoke {
+    Point to;
+    std::uint32_t edge;
+    std::uint32_t vertex;
+  };
+
+  // The spokes of the hub's vertices [first, last) of hub_vertices_, in anticlockwise order about
+  // p from the direction +x (exact); spokes in the same direction are adjacent.
+  [[nodiscard]] std::vector<Spoke> spokes(Point p, std::size_t first, std::size_t last) const {
+    std::vector<Spoke> out;
+    out.reserve(2 * (last - first));
+    for (std::size_t i = first; i < last; ++i) {
+      const std::uint32_t k = hub_vertices_[i];
+      out.push_back({rs_.v[rs_.prev[k]], rs_.prev[k], k});
+      out.push_back({rs_.v[rs_.next[k]], k, k});
+    }
+    const auto upper = [p](Point q) { return q.y > p.y || (q.y == p.y && q.x > p.x); };
+    std::sort(out.begin(), out.end(), [&](const Spoke& a, const Spoke& b) {
+      const bool ua = upper(a.to);
+      const bool ub = upper(b.to);
+      if (ua != ub) {
+        return ua;
+      }
+      if (const int turn = orientation(p, a.to, b.to); turn != 0) {
+        return turn > 0;
+      }
+      return a.edge < b.edge;  // the same direction: a fixed order
+    });
+    return out;
+  }
+
+  [[nodiscard]] static bool same_direction(Point p, const Spoke& a, const Spoke& b) {
+    return orientation(p, a.to, b.to) == 0 && dot_sign(p, a.to, b.to) > 0;
+  }
+
+  // Hubs: points where two or more vertices lie (of one ring: it touches itself; of several:
+  // they touch). Of the edges ending at a hub, two that are not consecutive in one ring meet
+  // there, and nowhere else unless they overlap; such a pair is a problem if the two edges
+  // belong to one ring or leave the hub in the same direction, a touch otherwise. The pairs
+  // with a problem that could have the smallest key are classified here: in each ring, its
+  // smallest edge at the hub with the smallest edge of its other vertices there, and in each
+  // direction, its two smallest edges. The touches are kept as the hub's list of vertices
+  // (check_touch_crossings, check_nesting and check_connectivity read it), not pair by pair.
+  void find_hubs() {
+    struct At {
+      Point p;
+      std::uint32_t vertex;
+    };
+    std::vector<At> order(rs_.v.size());
+    for (std::uint32_t k = 0; k < order.size(); ++k) {
+      order[k] = {rs_.v[k], k};
+    }
+    std::sort(order.begin(), order.end(), [](const At& a, const At& b) {
+      return std::tie(a.p.x, a.p.y, a.vertex) < std::tie(b.p.x, b.p.y, b.vertex);
+    });
+    for (std::size_t i = 0; i < order.size();) {
+      std::size_t j = i + 1;
+      while (j < order.size() && order[j].p == order[i].p) {
+        ++j;
+      }
+      if (j - i >= 2) {
+        const Point p = order[i].p;
+        const std::size_t first = hub_vertices_.size();
+        for (std::size_t k = i; k < j; ++k) {
+          hub_vertices_.push_back(order[k].vertex);
+        }
+        std::sort(hub_vertices_.begin() + static_cast<std::ptrdiff_t>(first), hub_vertices_.end(),
+                  [this](std::uint32_t a, std::uint32_t b) {
+                    return std::tie(rs_.ring_of[a], a) < std::tie(rs_.ring_of[b], b);
+                  });
+        hubs_.push_back({p, static_cast<std::uint32_t>(first)});
+        // One ring with several vertices here.
+        for (std::size_t a = first; a < hub_vertices_.size();) {
+          std::size_t b = a + 1;
+          while (b < hub_vertices_.size() && rs_.ring_of[hub_vertices_[b]] == rs_.ring_of[hub_vertices_[a]]) {
+            ++b;
+          }
+          if (b - a >= 2) {
+            const auto smallest_edge = [this](std::uint32_t k) { return std::min(rs_.prev[k], k); };
+            std::size_t lowest = a;
+            for (std::size_t c = a + 1; c < b; ++c) {
+              if (smallest_edge(hub_vertices_[c]) < smallest_edge(hub_vertices_[lowest])) {
+                lowest = c;
+              }
+            }
+            std::uint32_t other = UINT32_MAX;
+            for (std::size_t c = a; c < b; ++c) {
+              if (c != lowest) {
+                other = std::min(other, smallest_edge(hub_vertices_[c]));
+              }
+            }
+            classify(smallest_edge(hub_vertices_[lowest]), other);
+          }
+          a = b;
+        }
+        // Edges leaving in the same direction.
+        const std::vector<Spoke> around = spokes(p, first, hub_vertices_.size());
+        for (std::size_t a = 0; a + 1 < around.size();) {
+          std::size_t b = a + 1;
+          while (b < around.size() && same_direction(p, around[a], around[b])) {
+            ++b;
+          }
+          if (b - a >= 2) {
+            std::uint32_t e1 = UINT32_MAX;
+            std::uint32_t e2 = UINT32_MAX;
+            for (std::size_t c = a; c < b; ++c) {
+              const std::uint32_t e = around[c].edge;
+              if (e < e1) {
+                e2 = e1;
+                e1 = e;
+              } else if (e < e2) {
+                e2 = e;
+              }
+            }
+            classify(e1, e2);
+          }
+          a = b;
+        }
+      }
+      i = j;
+    }
+    hubs_.push_back({Point{}, static_cast<std::uint32_t>(hub_vertices_.size())});  // end marker
+  }
+
+  // The box pass's classification, leaving the pairs that meet at a hub to find_hubs(): two
+  // edges with a common endpoint that are not consecutive in one ring.
+  void classify_unless_hub(std::uint32_t e, std::uint32_t f) {
+    const Point A = rs_.v[e];
+    const Point B = rs_.v[rs_.next[e]];
+    const Point C = rs_.v[f];
+    const Point D = rs_.v[rs_.next[f]];
+    if ((A == C || A == D || B == C || B == D) && rs_.next[e] != f && rs_.next[f] != e) {
+      return;
+    }
+    classify(e, f);
   }
 
   void classify(std::uint32_t e, std::uint32_t f) {
@@ -528,6 +664,45 @@ class Validator {
   // Rings that meet at a point must not cross there: the other ring's two edges at the point
   // must both lie on the same side of this ring's path through it.
   void check_touch_crossings() {
+    // At a hub, rings cross iff their edges interleave about it: each ring has two edges there
+    // (it passes the hub once, or it touches itself: reported before), and listed in order about
+    // the hub, no two rings may alternate (a stack of the rings open). Where some do, every pair
+    // of the hub's rings joins the pairwise test below, which names the first crossing.
+    std::vector<std::uint8_t> seen(rs_.v.size(), 0);
+    for (std::size_t h = 0; h + 1 < hubs_.size(); ++h) {
+      const Point p = hubs_[h].p;
+      const std::size_t first = hubs_[h].first;
+      const std::size_t last = hubs_[h + 1].first;
+      const std::vector<Spoke> around = spokes(p, first, last);
+      std::vector<std::uint32_t> open;
+      bool interleave = false;
+      for (const Spoke& sp : around) {
+        if (seen[sp.vertex] == 0) {
+          seen[sp.vertex] = 1;
+          open.push_back(sp.vertex);
+        } else if (open.back() == sp.vertex) {
+          open.pop_back();
+        } else {
+          interleave = true;
+          break;
+        }
+      }
+      for (const Spoke& sp : around) {
+        seen[sp.vertex] = 0;
+      }
+      if (!interleave) {
+        continue;
+      }
+      for (std::size_t a = first; a < last; ++a) {
+        for (std::size_t b = a + 1; b < last; ++b) {
+          const std::uint32_t ka = hub_vertices_[a];
+          const std::uint32_t kb = hub_vertices_[b];
+          const std::uint32_t ra = rs_.ring_of[ka];
+          const std::uint32_t rb = rs_.ring_of[kb];
+          touches_.push_back(ra < rb ? Touch{p, ra, rb, ka, kb} : Touch{p, rb, ra, kb, ka});
+        }
+      }
+    }
     std::sort(touches_.begin(), touches_.end(), [](const Touch& a, const Touch& b) {
       return std::tie(a.ring_a, a.ring_b, a.p.x, a.p.y) < std::tie(b.ring_a, b.ring_b, b.p.x, b.p.y);
     });
@@ -615,31 +790,48 @@ class Validator {
   }
 
   // Nesting: holes inside their own outer ring and in no other hole of it; an outer ring
-  // inside another polygon only within one of its holes. The nesting tree (ring_tree.hpp, one
-  // sweep) decides for every ring at once; the ray parity of misplaced() only phrases the report
-  // of the first ring found wrong, so the message is the one a ring-by-ring search gives. (Ray
-  // parity for every ring cost O(n) per ring where rays cross many rings, as along a row of
-  // parts, and brute force where every vertex of a ring touches another, as in a checkerboard.)
+  // inside another polygon only within one of its holes. Ring by ring, misplaced() takes the
+  // parity of a ray from a point of the ring on no other ring: through the edge grid, a row of
+  // cells per ring, or by brute force where every vertex of the ring touches another ring. That
+  // is quadratic where rays cross many rings (a row of parts) or many rings need brute force (a
+  // checkerboard: 174 s for 8,192 squares). So when the rays would cost more than a few times the
+  // number of edges, the nesting tree (ring_tree.hpp, one sweep) decides for every ring at once,
+  // and misplaced() only phrases the report of the first ring found wrong: the message is the one
+  // the ring-by-ring search gives.
   void check_nesting(const EdgeGrid& grid) const {
-    const std::vector<std::uint8_t> wrong = misplaced_rings(ring_parents(rs_));
-    const auto first = std::find(wrong.begin(), wrong.end(), std::uint8_t{1});
-    if (first == wrong.end()) {
-      return;
-    }
     std::vector<std::vector<Point>> touch_points(rs_.rings.size());
     for (const Touch& t : touches_) {
       touch_points[t.ring_a].push_back(t.p);
       touch_points[t.ring_b].push_back(t.p);
     }
+    for (std::size_t h = 0; h + 1 < hubs_.size(); ++h) {
+      for (std::size_t i = hubs_[h].first; i < hubs_[h + 1].first; ++i) {
+        touch_points[rs_.ring_of[hub_vertices_[i]]].push_back(hubs_[h].p);
+      }
+    }
     for (auto& pts : touch_points) {
       std::sort(pts.begin(), pts.end(), point_less);
     }
-    for (auto r = static_cast<std::uint32_t>(first - wrong.begin()); r < wrong.size(); ++r) {
+    const std::size_t n = rs_.v.size();
+    const std::size_t budget = 8 * n + 4096;
+    std::size_t cost = 0;
+    for (std::uint32_t r = 0; r < rs_.rings.size() && cost <= budget; ++r) {
+      const std::optional<std::uint32_t> k = free_vertex(r, touch_points[r]);
+      cost += k ? grid.ray_cost(rs_.v[*k]) : 16 * n;
+    }
+    if (cost <= budget) {
+      for (std::uint32_t r = 0; r < rs_.rings.size(); ++r) {
+        misplaced(grid, r, touch_points[r]);
+      }
+      return;
+    }
+    const std::vector<std::uint8_t> wrong = misplaced_rings(ring_parents(rs_));
+    for (std::uint32_t r = 0; r < wrong.size(); ++r) {
       if (wrong[r] != 0) {
         misplaced(grid, r, touch_points[r]);  // throws
+        throw std::logic_error("validate: the nesting tree and ray parity disagree");
       }
     }
-    throw std::logic_error("validate: the nesting tree and ray parity disagree");
   }
 
   // The rings that break a nesting rule, from the tree (parent[r]: innermost ring containing r).
@@ -781,6 +973,27 @@ class Validator {
         links.push_back({ring(t.ring_a).part, t.p, t.ring_b});
       }
     }
+    // At a hub, every two rings touch: those of a polygon with two or more rings there link.
+    std::vector<Link> at_hub;
+    for (std::size_t h = 0; h + 1 < hubs_.size(); ++h) {
+      at_hub.clear();
+      for (std::size_t i = hubs_[h].first; i < hubs_[h + 1].first; ++i) {
+        const std::uint32_t r = rs_.ring_of[hub_vertices_[i]];
+        at_hub.push_back({ring(r).part, hubs_[h].p, r});
+      }
+      std::sort(at_hub.begin(), at_hub.end(), [](const Link& a, const Link& b) { return a.part < b.part; });
+      for (std::size_t a = 0; a < at_hub.size();) {
+        std::size_t b = a + 1;
+        while (b < at_hub.size() && at_hub[b].part == at_hub[a].part) {
+          ++b;
+        }
+        if (b - a >= 2) {
+          links.insert(links.end(), at_hub.begin() + static_cast<std::ptrdiff_t>(a),
+                       at_hub.begin() + static_cast<std::ptrdiff_t>(b));
+        }
+        a = b;
+      }
+    }
     const auto less = [](const Link& a, const Link& b) {
       return std::tie(a.part, a.p.x, a.p.y, a.ring) < std::tie(b.part, b.p.x, b.p.y, b.ring);
     };
@@ -874,7 +1087,15 @@ class Validator {
   const RingSet& rs_;
   const SourceLocator& where_;
   std::optional<Problem> problem_;
-  std::vector<Touch> touches_;
+  std::vector<Touch> touches_;  // touches found pair by pair (not at hubs)
+  // Hub h: the point hubs_[h].p and its vertices hub_vertices_[hubs_[h].first, hubs_[h + 1].first),
+  // sorted by ring; the last entry of hubs_ only ends the list.
+  struct Hub {
+    Point p;
+    std::uint32_t first;
+  };
+  std::vector<Hub> hubs_;
+  std::vector<std::uint32_t> hub_vertices_;
 };
 
 }  // namespace

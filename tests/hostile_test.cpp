@@ -464,8 +464,8 @@ TEST(Hostile, StarWithCrowdedEdgeBoxesNamesItsCrossing) {
 }
 
 // Two holes in the star, each touching it at one of its vertices and the other at the origin:
-// with the star's ring they cut its inside in two. Only the pairwise pass records touches, so the
-// sweep must not decide here: vertices at the same point send the check back to it.
+// with the star's ring they cut its inside in two. The sweep finds no edges meeting inside, and
+// the touches, all at points where vertices meet, are the hub pass's (validate.cpp, find_hubs()).
 TEST(Hostile, StarWithCrowdedEdgeBoxesAndHolesSplittingIt) {
   const std::size_t n = 20000;
   const fp::Ring outer = star(n);

@@ -993,6 +993,57 @@ TEST(OracleValidity, AgreesWithBoostGeometryOnRandomSmallPolygons) {
   EXPECT_GE(both_invalid, kCases / 8);
 }
 
+// The same random cases, each repeated 48 times along a row (translated by 10 units, so the
+// copies are disjoint): the copies are valid together exactly when one is. A row makes rays from
+// the rings cross many others, so frontpack decides nesting with its sweep (ring_tree.cpp)
+// rather than ray by ray as for a single small case; the verdict and the kind of error must be
+// those of the single case, and the verdict Boost.Geometry's.
+TEST(OracleValidity, RowsOfCopiesAgreeWithBoostGeometry) {
+  constexpr int kCopies = 48;
+  constexpr std::size_t kCases = 2000;
+  Rng rng(0x0b005700a11d1702ULL);
+  std::size_t valid = 0;
+  std::size_t invalid = 0;
+  std::size_t disagreements = 0;
+  for (std::size_t n = 0; n < kCases; ++n) {
+    const std::vector<fp::Polygon> one = random_case(rng);
+    std::vector<fp::Polygon> row;
+    for (int c = 0; c < kCopies; ++c) {
+      const auto shift = [c](fp::Ring& ring) {
+        for (Point& q : ring) {
+          q.x += 10.0 * c;
+        }
+      };
+      for (fp::Polygon p : one) {
+        shift(p.outer);
+        for (fp::Ring& hole : p.holes) {
+          shift(hole);
+        }
+        row.push_back(std::move(p));
+      }
+    }
+    const FrontpackVerdict single = frontpack_verdict(one);
+    const FrontpackVerdict copies = frontpack_verdict(row);
+    const BoostVerdict b = boost_verdict(one);
+    (copies.valid ? valid : invalid) += 1;
+    if (copies.valid == b.valid && copies.valid == single.valid && copies.kind == single.kind) {
+      continue;
+    }
+    if (++disagreements <= 20) {
+      std::cout << "[ disagree ] case " << n << ": " << polygons_wkt(one) << "\n  frontpack, one: "
+                << (single.valid ? "valid" : std::string(fp::to_string(*single.kind)) + ": " + single.message)
+                << "\n  frontpack, a row of " << kCopies << ": "
+                << (copies.valid ? "valid" : std::string(fp::to_string(*copies.kind)) + ": " + copies.message)
+                << "\n  boost::geometry::is_valid: " << (b.valid ? "valid" : "invalid") << ": " << b.message << '\n';
+    }
+  }
+  std::cout << "[ oracle   ] " << kCases << " rows of " << kCopies << " copies: " << valid << " valid, " << invalid
+            << " invalid, " << disagreements << " disagreements\n";
+  EXPECT_EQ(disagreements, 0U);
+  EXPECT_GE(valid, kCases / 8);
+  EXPECT_GE(invalid, kCases / 8);
+}
+
 // Hand-made configurations, each with its OGC verdict decided here from the Simple Features
 // rules (a polygon's rings are simple; rings of a polygon meet only at finitely many points and
 // do not cross; holes lie in the shell and not in each other; the interior is connected; the

@@ -6,7 +6,9 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstddef>
+#include <numbers>
 #include <string>
 #include <vector>
 
@@ -122,7 +124,7 @@ TEST(TouchingRings, CheckerboardOfHolesDisconnectsTheInterior) {
 
 // Holes along every third diagonal touch their diagonal neighbours at corners: chains, no loop.
 TEST(TouchingRings, DiagonalChainsOfTouchingHolesAreValid) {
-  const int n = 32;
+  const int n = 64;
   const auto on_chain = [](int i, int j) { return ((j - i) % 3 + 3) % 3 == 0; };
   const fp::Polygon p = board_with_holes(n, on_chain);
   const fp::Domain d = fp::Domain::from_polygons({p});
@@ -232,4 +234,48 @@ TEST(TouchingRings, ConcentricPartsNestedAHundredDeep) {
   EXPECT_EQ(e.kind(), Kind::hole_outside_shell) << e.what();
   EXPECT_NE(std::string(e.what()).find("polygon 80, hole 2: the hole is not inside its outer ring"), std::string::npos)
       << e.what();
+}
+
+namespace {
+
+// n thin triangles with a common vertex at the origin, the k-th spanning the angles
+// [2 pi k / n, 2 pi (k + 1/2) / n] out to radius 1 (rounded points: the spans stay apart).
+std::vector<fp::Ring> fan(int n) {
+  std::vector<fp::Ring> rings;
+  for (int k = 0; k < n; ++k) {
+    const double a = 2 * std::numbers::pi * k / n;
+    const double b = 2 * std::numbers::pi * (k + 0.5) / n;
+    rings.push_back({{0, 0}, {std::cos(a), std::sin(a)}, {std::cos(b), std::sin(b)}});
+  }
+  return rings;
+}
+
+}  // namespace
+
+// Hundreds of parts meeting at one point: their edges there meet pairwise (validate.cpp sorts
+// them by angle about the point instead of classifying the pairs). Valid, as parts or as holes
+// of one polygon; one more part leaving the point along an edge of another overlaps it; two
+// holes meeting at the centre and again at the outer ends cut the polygon.
+TEST(TouchingRings, FanOfRingsMeetingAtOnePoint) {
+  const std::vector<fp::Ring> rings = fan(512);
+  std::vector<fp::Polygon> parts;
+  for (const fp::Ring& r : rings) {
+    parts.push_back({r, {}});
+  }
+  const fp::Domain d = fp::Domain::from_polygons(parts);
+  EXPECT_EQ(d.num_polygons(), 512U);
+  EXPECT_EQ(d.locate({0, 0}), fp::Location::boundary);
+
+  fp::Polygon holes{square(-2, -2, 4), rings};
+  EXPECT_EQ(fp::Domain::from_polygons({holes}).num_holes(), 512U);
+
+  std::vector<fp::Polygon> along = parts;
+  along.push_back({{{0, 0}, {rings[7][1].x * 0.5, rings[7][1].y * 0.5}, {-0.001, 0.5}}, {}});
+  EXPECT_EQ(rejection(along).kind(), Kind::rings_overlap);
+
+  // Holes 1 and 2 meet at the origin and again at (1 0.2), a vertex of each: a loop.
+  const fp::Polygon cut{square(-2, -2, 4), {{{0, 0}, {1, 0.2}, {1, 0.5}}, {{0, 0}, {0.5, -0.3}, {1, 0.2}, {0.6, 0}}}};
+  const fp::InvalidDomainError e = rejection({cut});
+  EXPECT_EQ(e.kind(), Kind::disconnected_interior) << e.what();
+  EXPECT_NE(std::string(e.what()).find("touch at (1 0.2) and (0 0)"), std::string::npos) << e.what();
 }
