@@ -140,7 +140,8 @@ class BoundaryFront {
     classes_ = RadiusClasses<kClasses>(rmin_, rmax_);
 
     estimate_ = estimate_disks(box, *req.radii);
-    const auto reserve = static_cast<std::size_t>(std::min(estimate_ * 1.3 + 64, 1e9));
+    // (Every disk lies in the polygon: at most its box's area, bound_disks(), 1.18 estimates.)
+    const auto reserve = count_of(estimate_ * 1.3 + 64, 1e9);
     nodes_.reserve(reserve);
     before_.reserve(reserve);
     setup_walls();
@@ -229,6 +230,7 @@ class BoundaryFront {
     release(wall_ids_);
     release(walled_);
     move_out(nodes_, corners_.size(), origin_, unit_.inv_k, out_);
+    result.fixed_bytes = fixed_bytes_;
     return result;
   }
 
@@ -396,6 +398,21 @@ class BoundaryFront {
   void setup_grid() {
     grid_ = CellGrid(0, 0, width_, height_, rmax_);
     probes_inside_ = clearance_ < rmax_ && !grid_.coarse;
+    // The memory limit (BoundaryRequest::memory_limit) counts what is built here: the cell heads
+    // (4 bytes a cell) and 12 bytes a block of cells; the (cell, wall) pairs, 16 bytes each while
+    // they are listed (8, and as much again while the list moves or is copied grouped), then 12
+    // (the grouped copy and the lists kept) with 1,028 bytes a walled block; then
+    // peak_bytes_per_disk per disk. On a sliver 1e-7 high these lists, sized by the grid's cells
+    // and not by the disks, were most of the run's memory (565 MB for 1.1M disks).
+    const std::size_t blocks = ((grid_.nx + kBlock - 1) / kBlock) * ((grid_.ny + kBlock - 1) / kBlock);
+    std::size_t need = grid_.cells() * sizeof(std::int32_t) + blocks * (sizeof(std::size_t) + sizeof(std::uint32_t));
+    const auto over_limit = [&](std::size_t bytes, const std::string& what) {
+      if (req_.memory_limit != 0 && bytes >= req_.memory_limit) {
+        throw_memory_limit(req_.memory_limit, what + " (" + std::to_string(bytes) + " bytes)",
+                           count_of(estimate_, 1e18));
+      }
+    };
+    over_limit(need, "the grid over the polygon's box has " + std::to_string(grid_.cells()) + " cells");
     head_cell_.assign(grid_.cells(), kNone);
 
     // The reflex vertices are nodes (elements a disk can touch) but stay out of the cells: as
@@ -467,12 +484,16 @@ class BoundaryFront {
           pairs.push_back(Pair{static_cast<std::uint32_t>(block_of(uj, ui) * kBlockCells + place_in_block(uj, ui)),
                                static_cast<std::uint32_t>(e)});
         }
+        if (req_.memory_limit != 0 && need + 16 * pairs.size() >= req_.memory_limit) {  // a row at a time
+          over_limit(need + 16 * pairs.size(), "the domain's edges come within reach of " + std::to_string(pairs.size()) +
+                                                   "+ cells of its grid, counted with multiplicity");
+        }
       }
     }
     // A bit per block of kBlock x kBlock cells: whether any of them has walls. Most probes lie in
     // blocks without, and the bits of a whole front fit in the first-level cache, unlike the
     // cells' lists (a tenth of the front's cache misses were reading them).
-    const std::size_t blocks = blocks_x_ * ((grid_.ny + kBlock - 1) / kBlock);
+    // (blocks: blocks_x_ * the blocks per column, counted above.)
     walled_.assign((blocks + 63) / 64, 0);
     // The pairs grouped by block (a counting sort: stable, so each block's pairs stay in the order
     // of the walls).
@@ -508,6 +529,10 @@ class BoundaryFront {
     for (const std::uint64_t bits : walled_) {
       walled_blocks += static_cast<std::size_t>(std::popcount(bits));
     }
+    over_limit(need + 12 * grouped.size() + walled_blocks * (kBlockCells + 1) * sizeof(std::uint32_t),
+               "the domain's edges come near " + std::to_string(walled_blocks) + " blocks of " +
+                   std::to_string(kBlockCells) + " cells of its grid, with " + std::to_string(grouped.size()) +
+                   " (cell, wall) pairs");
     cell_walls_.reserve(walled_blocks * (kBlockCells + 1));
     wall_ids_.resize(grouped.size());
     std::array<std::uint32_t, kBlockCells + 1> at{};
@@ -530,6 +555,14 @@ class BoundaryFront {
       for (std::size_t k = start[b]; k < start[b + 1]; ++k) {
         wall_ids_[base + at[grouped[k].key % kBlockCells]++] = -(static_cast<std::int32_t>(grouped[k].wall) + 1);
       }
+    }
+    // What stays for the run; the disks have the rest of the limit.
+    fixed_bytes_ = (head_cell_.size() + wall_ids_.size() + cell_walls_.size() + block_first_.size()) *
+                       sizeof(std::uint32_t) +
+                   walled_.size() * sizeof(std::uint64_t);
+    if (req_.memory_limit != 0) {
+      over_limit(fixed_bytes_, "the grid and the lists of the walls near its cells");
+      control_.limit_memory(req_.memory_limit - fixed_bytes_);
     }
   }
 
@@ -1451,6 +1484,7 @@ class BoundaryFront {
   RadiusClasses<kClasses> classes_;
   Box box_;              // the polygon's box (local coordinates) grown by the clearance
   double estimate_ = 0;  // of the disks the box takes (estimate_disks())
+  std::size_t fixed_bytes_ = 0;  // the grid's and the wall lists', for the memory limit
   double area_ = 0;
   double polygon_area_ = 0;  // shoelace, for the seeding rule
   int seeds_ = 0;

@@ -23,6 +23,7 @@ struct BoundaryRequest {
   const RadiusDistribution* radii = nullptr;
   double clearance = 0;       ///< absolute, > 0 (fill.cpp computes the default)
   std::size_t max_disks = 0;  ///< stop when this many disks have been generated in total
+  std::size_t memory_limit = 0;  ///< as FrontRequest::memory_limit (its grid and its walls' lists)
   bool fill_voids = true;     ///< try each new disk in the voids behind the front first
   /// As FrontRequest::tick.
   std::function<bool(std::size_t, double)> tick;

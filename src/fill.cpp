@@ -73,6 +73,11 @@ double physical_memory() {
   return pages > 0 && page > 0 ? static_cast<double>(pages) * static_cast<double>(page) : 0;
 }
 
+// Bytes as a count (at most the largest size_t).
+std::size_t count_of_bytes(double bytes) {
+  return bytes < 0x1p63 ? static_cast<std::size_t>(bytes) : std::size_t{1} << 63;
+}
+
 // A count for a message: an integer below 1e15, else in scientific notation.
 std::string format_count(double v) {
   if (v < 1e15) {
@@ -102,7 +107,8 @@ Packing run_fill(const Domain& domain, const FillOptions& options,
   // Written so that a NaN fails the checks (estimate_disks() gives none; a check must not rely on it).
   if (!(estimate <= static_cast<double>(options.max_disks))) {
     throw LimitError("the request would generate about " + format_count(estimate) + " disks, more than max_disks = " +
-                         std::to_string(options.max_disks) + "; use larger radii or raise max_disks",
+                         std::to_string(options.max_disks) +
+                         "; use larger radii or raise max_disks (frontpack fill --max-disks)",
                      count);
   }
   const double memory_limit =
@@ -111,9 +117,14 @@ Packing run_fill(const Domain& domain, const FillOptions& options,
   if (memory_limit > 0 && !(memory <= memory_limit)) {
     throw LimitError("the request would generate about " + format_count(estimate) + " disks, needing about " +
                          format_count(memory) + " bytes of memory, more than the limit of " +
-                         format_count(memory_limit) + " bytes; use larger radii or raise memory_limit",
+                         format_count(memory_limit) +
+                         " bytes; use larger radii or raise memory_limit (frontpack fill --memory-limit)",
                      count);
   }
+  // The limit holds during the run too (the estimate is only an estimate: a box far thinner than
+  // the disks makes more than it says): the generators count their grids against it and stop
+  // their disks short of it, peak_bytes_per_disk each (FrontResult::over_memory, a LimitError).
+  const std::size_t memory_bytes = memory_limit >= 1 ? count_of_bytes(memory_limit) : 0;
 
   Packing packing;
   auto t0 = std::chrono::steady_clock::now();
@@ -137,6 +148,7 @@ Packing run_fill(const Domain& domain, const FillOptions& options,
     }
     req.clearance = clearance;
     req.max_disks = options.max_disks;
+    req.memory_limit = memory_bytes;
     req.fill_voids = options.fill_voids;
     const std::stop_token& stop = options.stop;
     if (progress || stop.stop_possible()) {
@@ -160,11 +172,19 @@ Packing run_fill(const Domain& domain, const FillOptions& options,
       breq.radii = &radii;
       breq.clearance = clearance;
       breq.max_disks = options.max_disks;
+      breq.memory_limit = memory_bytes;
       breq.fill_voids = options.fill_voids;
       breq.tick = req.tick;
       result = detail::advance_boundary(breq, rng, raw, packing.stats);
     } else {
       result = detail::advance_front(req, rng, raw, packing.stats);
+    }
+    if (result.over_memory) {
+      detail::throw_memory_limit(memory_bytes,
+                                 "it had generated " + std::to_string(raw.size()) + " disks, " +
+                                     std::to_string(peak_bytes_per_disk) + " bytes each at the peak, besides " +
+                                     std::to_string(result.fixed_bytes) + " bytes of grids",
+                                 raw.size());
     }
     packing.truncated = packing.truncated || result.truncated;
     packing.cancelled = packing.cancelled || result.cancelled;

@@ -54,6 +54,17 @@ double estimate_disks(const Box& box, const RadiusDistribution& radii) {
   return std::isnan(scaled) ? std::numeric_limits<double>::infinity() : scaled;
 }
 
+double bound_disks(const Box& box, double grow, const RadiusDistribution& radii) {
+  const Box grown{box.xmin - grow, box.ymin - grow, box.xmax + grow, box.ymax + grow};
+  return estimate_disks(grown, radii) / 0.85;
+}
+
+void throw_memory_limit(std::size_t limit, const std::string& what, std::size_t estimate) {
+  throw LimitError("the run would need more than the memory limit of " + std::to_string(limit) + " bytes: " + what +
+                       "; raise memory_limit (frontpack fill --memory-limit) or use larger radii",
+                   estimate);
+}
+
 namespace {
 
 constexpr std::int32_t kNone = -1;
@@ -98,8 +109,31 @@ class Front {
     fill_voids_ = req.fill_voids;
     classes_ = RadiusClasses<kVoidClasses>(req.radii->min() * unit_.k, rmax_);
 
+    // The memory limit: the grid's cell heads, then peak_bytes_per_disk per disk generated.
+    grid_ = CellGrid(box_.xmin, box_.ymin, box_.width(), box_.height(), rmax_);
+    const std::size_t grid_bytes = grid_.cells() * sizeof(std::int32_t);
+    if (req.memory_limit != 0) {
+      if (grid_bytes >= req.memory_limit) {
+        throw_memory_limit(req.memory_limit,
+                           "the grid over a polygon's box (" + std::to_string(grid_.cells()) + " cells) takes " +
+                               std::to_string(grid_bytes) + " bytes",
+                           count_of(estimate_disks(req.box, *req.radii), 1e18));
+      }
+      control_.limit_memory(req.memory_limit - grid_bytes);
+    }
+    fixed_bytes_ = grid_bytes;
+
     const double estimate = estimate_disks(req.box, *req.radii);
-    const auto reserve = static_cast<std::size_t>(std::min(estimate * 1.3 + 64, 1e9));
+    // Room for every disk the front can make: each lies within 5 rmax and two clearances of the
+    // box (a disk on the front within 2 rmax and a clearance of a centre in the box, one in a void
+    // within as much again of the front's), bound_disks(). A vector that outgrew its reservation
+    // held its old and its new array at once, 96 bytes per node (an open form on a 1e-7 high
+    // sliver generated 1.7 times the estimate and took 1.3 GB). Reserved pages cost nothing until
+    // written; the disk budget (max_disks, the memory limit) caps it.
+    const double bound = bound_disks(req.box, 5 * req.radii->max() + 2 * req.clearance, *req.radii);
+    const double room = static_cast<double>(control_.budget() - std::min(control_.budget(), out_.size()));
+    const std::size_t reserve =
+        count_of(std::min(std::max(std::isfinite(bound) ? bound * 1.1 : 0.0, estimate * 1.3), room) + 64, 1e9);
     nodes_.reserve(reserve + kFirstDisk);
     {  // In one call, the pages of the nodes this box is expected to take (huge_pages.hpp).
       const double budget =
@@ -170,6 +204,7 @@ class Front {
       release(v);
     }
     move_out(nodes_, kFirstDisk, origin_, unit_.inv_k, out_);
+    result.fixed_bytes = fixed_bytes_;
     return result;
   }
 
@@ -199,10 +234,7 @@ class Front {
     return id;
   }
 
-  void setup_grid() {
-    grid_ = CellGrid(box_.xmin, box_.ymin, box_.width(), box_.height(), rmax_);
-    head_.assign(grid_.cells(), kNone);
-  }
+  void setup_grid() { head_.assign(grid_.cells(), kNone); }  // (grid_ is set up in the constructor)
 
   [[nodiscard]] std::int64_t col(double x) const noexcept { return grid_.col(x); }
   [[nodiscard]] std::int64_t row(double y) const noexcept { return grid_.row(y); }
@@ -795,6 +827,7 @@ class Front {
   double band_ = 0;
   std::size_t window_ = 5;
   RunControl control_;
+  std::size_t fixed_bytes_ = 0;  // the grid's, for the memory limit's message
   double area_ = 0;  // sum of r^2 over the disks placed, for progress reports
   double ox_ = 0;
   double oy_ = 0;

@@ -242,9 +242,60 @@ TEST(Hostile, RequestBeyondTheMemoryLimitIsRefused) {
     ADD_FAILURE() << "not refused";
   } catch (const fp::LimitError& e) {
     EXPECT_NE(std::string(e.what()).find("bytes of memory"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("raise memory_limit (frontpack fill --memory-limit)"), std::string::npos)
+        << e.what();
   }
   o.memory_limit = 100'000'000;  // 100 MB: enough
   EXPECT_NO_THROW((void)fp::fill(d, o));
+}
+
+// The memory limit holds during the run, not only for the estimate, which assumes a dense packing
+// of the box: the closed and open forms fill a sliver 1e-5 high with disks of about half its
+// height 1.7 to 2.5 times over (the disks that overhang the box are culled), and their grid has
+// more cells than disks; the boundary method lists the walls near each cell of its grid. Given a
+// limit that the estimate (about 133,600 disks, 8.6 MB) passes, every method stops with a
+// LimitError naming the option, before the grid or the disks exceed it. (Peak RSS against the
+// limit: docs/robustness.md, "Memory".)
+TEST(Hostile, MemoryLimitHoldsDuringTheRun) {
+  const fp::Domain d = fp::Domain::from_wkt("POLYGON((0 0,1 0,1 1e-5,0 0))");
+  struct Case {
+    fp::Method method;
+    std::size_t limit;
+    const char* what;
+  };
+  const Case cases[] = {
+      {fp::Method::open, 9'000'000, "the grid over a polygon's box"},
+      {fp::Method::open, 16'000'000, "it had generated"},
+      {fp::Method::closed, 16'000'000, "it had generated"},
+      {fp::Method::boundary, 9'000'000, "the grid over the polygon's box"},
+      {fp::Method::boundary, 30'000'000, "the domain's edges come within reach of"},
+  };
+  for (const Case& c : cases) {
+    SCOPED_TRACE(std::string(fp::to_string(c.method)) + " " + std::to_string(c.limit));
+    fp::FillOptions o;
+    o.method = c.method;
+    o.radii = fp::Radii::constant(4.5e-6);
+    o.memory_limit = c.limit;
+    try {
+      (void)fp::fill(d, o);
+      ADD_FAILURE() << "not stopped";
+    } catch (const fp::LimitError& e) {
+      const std::string what = e.what();
+      EXPECT_NE(what.find("memory limit of " + std::to_string(c.limit) + " bytes: " + c.what), std::string::npos)
+          << what;
+      EXPECT_NE(what.find("raise memory_limit (frontpack fill --memory-limit)"), std::string::npos) << what;
+    }
+  }
+  for (const fp::Method m : {fp::Method::closed, fp::Method::open, fp::Method::boundary}) {
+    SCOPED_TRACE(fp::to_string(m));
+    fp::FillOptions o;
+    o.method = m;
+    o.radii = fp::Radii::constant(4.5e-6);
+    o.memory_limit = 64'000'000;  // enough: 24 to 43 MB
+    const fp::Packing p = fp::fill(d, o);
+    expect_certified(d, p);
+    EXPECT_GT(p.disks.size(), 5'000U);  // 5,556 kept by the closed form, about 11,100 by the others
+  }
 }
 
 // Rings collapsed into a few ulps: 131,072 vertices on an 8 x 8 grid of points one ulp apart

@@ -223,6 +223,21 @@ frontpack_tool_test(fill_lognormal_default_bounds 5
 frontpack_tool_test(check_nul_byte 7 "nul_byte\\.csv:2:5: y '0\\.5\\\\0' is not a number"
   check ${SQ} ${CMAKE_CURRENT_SOURCE_DIR}/data/tool/nul_byte.csv)
 
+# --memory-limit (bytes, K/M/G/T suffixes): a request whose estimate exceeds it is refused up
+# front; a run that would exceed it (a sliver whose overhanging disks the estimate misses) stops
+# with the same exit code and a message naming the option.
+frontpack_tool_test(fill_memory_limit_refused 5 "more than the limit of 1048576 bytes; use larger radii or raise memory_limit \\(frontpack fill --memory-limit\\)"
+  fill ${SQ} --radius constant:1e-3 --memory-limit 1M)
+frontpack_tool_test(fill_memory_limit_stops_the_run 5
+  "the run would need more than the memory limit of 16777216 bytes: it had generated [0-9]+ disks.*raise memory_limit \\(frontpack fill --memory-limit\\)"
+  fill --wkt "POLYGON((0 0,1 0,1 1e-5,0 0))" --method open --radius constant:4.5e-6 --memory-limit 16m)
+frontpack_tool_test(fill_memory_limit_enough 0 "disks: +[0-9]+ \\(open form"
+  fill --wkt "POLYGON((0 0,1 0,1 1e-5,0 0))" --method open --radius constant:4.5e-6 --memory-limit 64000000)
+frontpack_tool_test(fill_memory_limit_bad 5 "--memory-limit '12Q': expected a number of bytes, with an optional suffix K, M, G or T"
+  fill ${SQ} --memory-limit 12Q)
+frontpack_tool_test(fill_memory_limit_too_large 5 "--memory-limit '99999999999999999999G': too large"
+  fill ${SQ} --memory-limit 99999999999999999999G)
+
 # Files and signals, as a user meets them (tests/tool/files_and_signals.py): /dev/stdout, devices,
 # FIFOs and symlinks; a file given for two uses; SIGINT, SIGTERM and SIGHUP in every phase; fills
 # that place no disk or stop at --max-disks. One test per class of cases.

@@ -16,6 +16,7 @@
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
+#include <cctype>
 #include <charconv>
 #include <cmath>
 #include <csignal>
@@ -27,6 +28,7 @@
 #include <numbers>
 #include <sstream>
 #include <string>
+#include <system_error>
 #include <vector>
 
 #include "frontpack/frontpack.hpp"
@@ -169,12 +171,43 @@ int run_info(const DomainSource& src) {
 
 constexpr const char* kDefaultRadius = "uniform:0.01,0.05";
 
+// --memory-limit: bytes, with an optional suffix K, M, G or T (powers of 1024: 512M, 2G); 0 leaves
+// the library's default (three quarters of the machine's memory).
+std::size_t parse_bytes(const char* option, const std::string& text) {
+  std::size_t digits = 0;
+  while (digits < text.size() && text[digits] >= '0' && text[digits] <= '9') {
+    ++digits;
+  }
+  int shift = -1;
+  if (digits == text.size()) {
+    shift = 0;
+  } else if (digits + 1 == text.size()) {
+    const std::string units = "KMGT";
+    const std::size_t u = units.find(static_cast<char>(std::toupper(static_cast<unsigned char>(text.back()))));
+    shift = u == std::string::npos ? -1 : 10 * static_cast<int>(u + 1);
+  }
+  const std::string given = text.size() > 40 ? text.substr(0, 40) + "..." : text;
+  if (digits == 0 || shift < 0) {
+    throw frontpack::OptionError(std::string(option) + " '" + given +
+                                 "': expected a number of bytes, with an optional suffix K, M, G or T (powers of "
+                                 "1024), e.g. 512M or 2G; 0 for three quarters of the machine's memory");
+  }
+  std::uint64_t value = 0;
+  const auto [end, ec] = std::from_chars(text.data(), text.data() + digits, value);
+  (void)end;
+  if (ec != std::errc{} || value > (std::numeric_limits<std::size_t>::max() >> shift)) {
+    throw frontpack::OptionError(std::string(option) + " '" + given + "': too large");
+  }
+  return static_cast<std::size_t>(value) << shift;
+}
+
 struct FillArgs {
   DomainSource src;
   std::string method = "boundary";
   std::string radius;  // empty: kDefaultRadius
   std::string seed = "0";
   std::string max_disks = std::to_string(frontpack::FillOptions{}.max_disks);
+  std::string memory_limit = "0";
   std::vector<std::string> outputs;
   std::string format;
   std::string json;
@@ -268,6 +301,7 @@ int run_fill(const FillArgs& a) {
   options.radii = frontpack::parse_radii(spec);
   options.seed = parse_count("--seed", a.seed, std::numeric_limits<std::uint64_t>::max());
   options.max_disks = parse_count("--max-disks", a.max_disks, std::numeric_limits<std::uint64_t>::max());
+  options.memory_limit = parse_bytes("--memory-limit", a.memory_limit);
   options.stop = stop_token();
   const std::vector<frontpack_tool::Output> outputs = frontpack_tool::resolve_outputs(a.outputs, a.format, false);
   std::vector<frontpack_tool::FileUse> inputs = domain_inputs(a.src);
@@ -594,6 +628,10 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   fill->add_option("--max-disks", fill_args.max_disks,
                    "refuse runs estimated beyond this many disks, and stop a run that reaches it (exit 9)")
+      ->capture_default_str();
+  fill->add_option("--memory-limit", fill_args.memory_limit,
+                   "bytes a run may take, e.g. 512M or 2G (K, M, G, T: powers of 1024); refused up front or stopped "
+                   "before it would take more (exit 5); 0: three quarters of the machine's memory")
       ->capture_default_str();
   fill->add_option("-o,--output", fill_args.outputs,
                    "output file, any number; format by extension: .csv, .txt/.yade (Yade), .data/.lmp (LAMMPS), "

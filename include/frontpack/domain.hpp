@@ -48,7 +48,9 @@ class Domain {
  public:
   /// Parses a WKT POLYGON or MULTIPOLYGON (keywords in any case, any whitespace, scientific
   /// notation). Throws WktError for text that is not such a geometry and InvalidDomainError for a
-  /// geometry that is not valid.
+  /// geometry that is not valid. Numbers are read with correct rounding; one out of the range of
+  /// doubles, whether it overflows ("1e400") or underflows to 0 ("1e-400"), is a WktError
+  /// (bad_number), never rounded quietly; subnormal values are kept (README, "Numbers").
   [[nodiscard]] static Domain from_wkt(std::string_view wkt);
 
   /// Reads a WKT file. Throws IoError if it cannot be read, then as from_wkt; the messages name

@@ -27,7 +27,9 @@
 
 namespace frontpack {
 
-/// A request that would exceed FillOptions::max_disks; the message gives the estimate.
+/// A request that would exceed FillOptions::max_disks or memory_limit, refused up front with the
+/// estimate in the message, or a run stopped at memory_limit; the message names the option to
+/// raise, by its library and its tool name (max_disks, --max-disks).
 class LimitError : public Error {
  public:
   LimitError(const std::string& message, std::size_t estimate) : Error(message), estimate_(estimate) {}
@@ -74,9 +76,13 @@ struct FillOptions {
   /// Refuse requests whose estimated disk count exceeds this (LimitError), and stop a run that
   /// reaches it (Packing::truncated).
   std::size_t max_disks = 50'000'000;
-  /// Refuse requests whose estimated peak memory (peak_bytes_per_disk per estimated disk)
-  /// exceeds this many bytes (LimitError), so that a run is never killed by the operating system
-  /// half-way. 0 (the default) means three quarters of the machine's physical memory.
+  /// The memory a run may take, in bytes, so that it is never killed by the operating system
+  /// half-way: a request whose estimated disks take more (peak_bytes_per_disk each) is refused up
+  /// front, and a run whose grids plus peak_bytes_per_disk per disk generated so far would take
+  /// more stops there; both with LimitError. (The estimate assumes a dense packing of the
+  /// polygons' boxes; the closed and open forms also generate disks that overhang a box and are
+  /// culled, up to 1.7 times the estimate on a box thinner than the disks.) 0 (the default) means
+  /// three quarters of the machine's physical memory.
   std::size_t memory_limit = 0;
   /// Once a stop is requested (from another thread, or a signal-handling thread), the run throws
   /// CancelledError within milliseconds, in generation or in certification, and returns nothing.
@@ -84,7 +90,10 @@ struct FillOptions {
 };
 
 /// The documented bound on fill()'s peak memory per generated disk (measured 42-61 bytes on the
-/// 1M-, 10M- and 100M-disk benchmarks, the boundary method the most; docs/performance.md).
+/// 1M-, 10M- and 100M-disk benchmarks, the boundary method the most; docs/performance.md),
+/// besides the generators' grids (4 bytes a cell, at most about 16M cells per polygon; the
+/// boundary method's lists of the walls near each cell, 4 bytes per (cell, wall) pair) and the
+/// domain. FillOptions::memory_limit counts both.
 inline constexpr std::size_t peak_bytes_per_disk = 64;
 
 /// Progress of a run, reported through Generator::on_progress.

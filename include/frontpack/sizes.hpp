@@ -134,7 +134,9 @@ class Radii {
 [[nodiscard]] std::vector<double> sample_radii(const Radii& radii, std::size_t n, std::uint64_t seed);
 
 /// Parses a radius spec, as the tool's --radius takes it. Sizes are radii unless @diameter says
-/// otherwise; numbers are decimal (C locale) and must be finite.
+/// otherwise; numbers are decimal (C locale) and must be finite; one out of the range of doubles,
+/// overflowing or underflowing to 0, is refused as by every reader ("'1e-400' is out of the range
+/// of a double (underflows to 0)"; README, "Numbers").
 ///
 ///   uniform:RMIN,RMAX                   uniform in [RMIN, RMAX] (the paper's)
 ///   constant:R                          every radius R
@@ -165,8 +167,9 @@ struct SizeTable {
 /// classes) or "radius,passing", "diameter,passing" (a grading curve: cumulative fraction
 /// passing), then one "size,fraction" line per row. Fractions are in [0, 1] (not percent).
 /// Blank lines and lines starting with '#' are skipped; fields may be padded with spaces;
-/// CRLF line ends are accepted. Only the syntax is checked here: the factories check the
-/// values. Throws IoError if unreadable, OptionError "FILE:LINE: ..." naming the bad line.
+/// CRLF line ends are accepted; numbers as for parse_radii. Only the syntax is checked here: the
+/// factories check the values. Throws IoError if unreadable, OptionError "FILE:LINE: ..." naming
+/// the bad line.
 [[nodiscard]] SizeTable read_size_table(const std::filesystem::path& path);
 /// The same, from text; `source` names it in messages.
 [[nodiscard]] SizeTable parse_size_table(std::string_view text, std::string_view source);
