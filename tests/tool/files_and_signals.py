@@ -203,6 +203,18 @@ class Outcomes(unittest.TestCase):
         self.assertEqual(r.returncode, 8, r.stderr)
         self.assertEqual(self.s.entries(), [])
 
+    def test_stopped_at_max_disks_says_so_under_quiet(self):
+        # The closed form overhangs a box smaller than a few disks: it generates more disks than
+        # the estimate (7 here), so --max-disks 7 passes the up-front check and stops the run.
+        out = self.s.path("p.csv")
+        r = run("fill", "--wkt", SQUARE, "--radius", "constant:0.2", "--method", "closed", "--max-disks", "7",
+                "-q", "-o", out)
+        self.assertEqual(r.returncode, 9, r.stderr)
+        self.assertIn("stopped at --max-disks 7", r.stderr)
+        self.assertEqual(self.s.entries(), ["p.csv"])
+        check = run("check", os.path.join(SHAPES, "unit_square.wkt"), out)
+        self.assertEqual(check.returncode, 0, check.stdout + check.stderr)
+
     def test_default_radius_is_named(self):
         j = self.s.path("s.json")
         r = run("fill", "--wkt", SQUARE, "--json", j)
