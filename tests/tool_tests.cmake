@@ -180,6 +180,11 @@ frontpack_tool_check(render_huge_radii 0 "u\\.png \\(png, 300 x ${square_300_hei
   PNG ${O}/u.png 300 ${square_300_height} FILES ${O}/u.svg ${O}/u.pdf
   ARGS render ${SQ} ${TD}/huge_radii.csv -o ${O}/u.png -o ${O}/u.svg -o ${O}/u.pdf --width 300 --radius uniform:0.1,1e308)
 set_tests_properties(tool.render_huge_radii PROPERTIES TIMEOUT 20)
+# A domain 4e-320 wide has no finite pixels per unit (it was refused as "taller than 32767
+# pixels"): drawn at a scaled unit, like any other.
+set(O ${TOOL_OUT}/render_subnormal_domain)
+frontpack_tool_check(render_subnormal_domain 0 "u\\.png \\(png, 300 x ${square_300_height}, 2 disks\\)"
+  PNG ${O}/u.png 300 ${square_300_height} ARGS render ${TD}/subnormal_square.wkt ${TD}/subnormal_disks.csv -o ${O}/u.png --width 300)
 frontpack_tool_check(stats_huge_radii 0 "disks: +11 .*radii: +min 1e-05, .*max 1e\\+308"
   ARGS stats ${SQ} ${TD}/huge_radii.csv --samples 10000)
 frontpack_tool_check(check_huge_radii 6 "outside: +6 disks .*overlaps: "

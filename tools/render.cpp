@@ -108,15 +108,20 @@ void check(cairo_status_t status, const std::filesystem::path& path) {
   }
 }
 
-// Maps domain coordinates to the picture's (y up becomes y down), with a margin.
+// Maps domain coordinates to the picture's (y up becomes y down), with a margin. Lengths are
+// taken times k, a power of two (exact), then times scale: k is 1 but for a domain narrower than
+// 2^-900, where pixels per unit of length would overflow (a subnormal domain, 4e-320 wide).
 struct View {
   double scale = 1;
+  double k = 1;
   double x0 = 0;
   double y0 = 0;
   double margin = 0;
   double height = 0;
-  [[nodiscard]] double x(double v) const { return margin + (v - x0) * scale; }
-  [[nodiscard]] double y(double v) const { return height - margin - (v - y0) * scale; }
+  [[nodiscard]] double px(double length) const { return length * k * scale; }  // a length in pixels
+  [[nodiscard]] double units(double pixels) const { return pixels / scale / k; }  // and back
+  [[nodiscard]] double x(double v) const { return margin + px(v - x0); }
+  [[nodiscard]] double y(double v) const { return height - margin - px(v - y0); }
 };
 
 constexpr double kMarginFraction = 0.02;
@@ -148,9 +153,9 @@ struct Frame {
 };
 
 Frame frame_of(const View& view, double width, double height, double pad) {
-  return {view.x0 + (-pad - view.margin) / view.scale, view.x0 + (width + pad - view.margin) / view.scale,
-          view.y0 + (view.height - view.margin - height - pad) / view.scale,
-          view.y0 + (view.height - view.margin + pad) / view.scale};
+  return {view.x0 + view.units(-pad - view.margin), view.x0 + view.units(width + pad - view.margin),
+          view.y0 + view.units(view.height - view.margin - height - pad),
+          view.y0 + view.units(view.height - view.margin + pad)};
 }
 
 // How a disk meets the frame, decided in domain coordinates (where every disk read is finite;
@@ -266,7 +271,7 @@ void draw(cairo_t* cr, const View& view, Picture format, const frontpack::Domain
     bool any = false;
     for (std::size_t m = b; m < e; ++m) {
       const frontpack::Disk& d = disks[order[m]];
-      double r = d.radius * view.scale;
+      double r = view.px(d.radius);
       const bool outlined = r >= outline_from;
       if (outline_pass && !outlined) {
         continue;
@@ -275,7 +280,7 @@ void draw(cairo_t* cr, const View& view, Picture format, const frontpack::Domain
         r -= outline_width;
       }
       if (!(r <= extent)) {  // (in pixels, its radius or centre may be infinite: decided in domain units)
-        const frontpack::Disk shown{d.centre, outline_pass || !outlined ? d.radius : d.radius - outline_width / view.scale};
+        const frontpack::Disk shown{d.centre, outline_pass || !outlined ? d.radius : d.radius - view.units(outline_width)};
         const Reach where = reach(shown, frame);
         if (where == Reach::none) {
           continue;
@@ -334,7 +339,9 @@ View make_view(const frontpack::Domain& domain, int width_px) {
   const double margin = kMarginFraction * width_px;
   View view;
   view.margin = margin;
-  view.scale = (width_px - 2 * margin) / (b.width() > 0 ? b.width() : extent);
+  const double width = b.width() > 0 ? b.width() : extent;
+  view.k = width < 0x1p-900 ? 0x1p1000 : 1.0;
+  view.scale = (width_px - 2 * margin) / (width * view.k);
   view.x0 = b.xmin;
   view.y0 = b.ymin;
   return view;
@@ -346,7 +353,7 @@ int font_px(int width_px) {
 
 int packing_height(const frontpack::Domain& domain, int width_px) {
   const View view = make_view(domain, width_px);
-  return static_cast<int>(std::ceil(domain.bbox().height() * view.scale + 2 * view.margin));
+  return static_cast<int>(std::ceil(view.px(domain.bbox().height()) + 2 * view.margin));
 }
 
 std::string format_g(double v) {
@@ -686,7 +693,7 @@ void render(frontpack::OutputFile& out, Picture format, const frontpack::Domain&
   }
   const double panel = options.histogram ? histogram_height(width) : 0;
   const double height_real =
-      domain.bbox().height() * make_view(domain, width).scale + 2 * kMarginFraction * width + panel;
+      make_view(domain, width).px(domain.bbox().height()) + 2 * kMarginFraction * width + panel;
   if (!(height_real <= 32767)) {
     throw frontpack::OptionError(std::string("--width ") + std::to_string(width) +
                                  ": the picture would be taller than 32767 pixels (the domain is tall "
