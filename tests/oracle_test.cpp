@@ -1000,7 +1000,7 @@ TEST(OracleValidity, AgreesWithBoostGeometryOnRandomSmallPolygons) {
 // those of the single case, and the verdict Boost.Geometry's.
 TEST(OracleValidity, RowsOfCopiesAgreeWithBoostGeometry) {
   constexpr int kCopies = 48;
-  constexpr std::size_t kCases = 2000;
+  constexpr std::size_t kCases = 1000;
   Rng rng(0x0b005700a11d1702ULL);
   std::size_t valid = 0;
   std::size_t invalid = 0;
