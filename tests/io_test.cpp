@@ -652,8 +652,11 @@ TEST(Numbers, OneRuleAndOneWordingInEveryReader) {
     }
     return std::string("(no error)");
   };
-  for (const auto& [token, words] : {std::pair<std::string, std::string>{"1e-400", "(underflows to 0)"},
-                                     std::pair<std::string, std::string>{"1e400", "(overflows to infinity)"}}) {
+  for (const auto& entry : {std::pair<std::string, std::string>{"1e-400", "(underflows to 0)"},
+                            std::pair<std::string, std::string>{"1e400", "(overflows to infinity)"}}) {
+    // Plain variables, not structured bindings: Clang 14 cannot capture those in the lambdas.
+    const std::string& token = entry.first;
+    const std::string& words = entry.second;
     const std::string phrase = "'" + token + "' is out of the range of a double " + words;
     const std::string messages[] = {
         what([&] { (void)fp::Domain::from_wkt("POLYGON((0 0,1 0,1 1," + token + " 1,0 0))"); }),
