@@ -90,7 +90,7 @@ BENCHMARK(BM_LoadWkt)->Arg(10'000)->Arg(100'000)->Unit(benchmark::kMillisecond);
 
 // A star of n spikes alternately at radius 1 and 2: its edges fan around the unit disk, so their
 // boxes meet in about n^2 / 22 pairs though no two edges meet. Validation's worst case for the
-// box pass; the sweep (validate.cpp, edges_disjoint) decides it.
+// box pass; the sweep (src/domain/validate.cpp, edges_disjoint) decides it.
 void BM_ValidateStar(benchmark::State& state) {
   const auto n = static_cast<std::size_t>(state.range(0));
   std::vector<fp::Point> ring;
@@ -114,7 +114,7 @@ fp::Ring unit_square(double x, double y) {
 
 // A checkerboard of n x n / 2 unit squares as a multipolygon (n = 128: 8,192 parts, 32,768
 // vertices): neighbouring parts touch at corners, so every vertex is a touch point. Ray parity
-// per ring made this quadratic (174 s at n = 128); the nesting sweep (ring_tree.cpp) decides it.
+// per ring made this quadratic (174 s at n = 128); the nesting sweep (src/domain/ring_tree.cpp) decides it.
 void BM_ValidateCheckerboard(benchmark::State& state) {
   const auto n = static_cast<int>(state.range(0));
   std::vector<fp::Polygon> parts;
@@ -183,7 +183,7 @@ BENCHMARK(BM_RejectCheckerboardOfHoles)->Arg(128)->Unit(benchmark::kMillisecond)
 
 // n thin triangles as a multipolygon, all with a vertex at the origin (n = 8,192: 24,576
 // vertices): their edges there meet in n^2 pairs, and sorting them by angle about the point
-// replaces classifying the pairs (validate.cpp, find_hubs(); about 70 s before at n = 8,192).
+// replaces classifying the pairs (src/domain/validate.cpp, find_hubs(); about 70 s before at n = 8,192).
 void BM_ValidateFan(benchmark::State& state) {
   const auto n = static_cast<int>(state.range(0));
   std::vector<fp::Polygon> parts;

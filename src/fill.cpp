@@ -11,13 +11,13 @@
 #include <numbers>
 #include <string>
 
-#include "boundary.hpp"
-#include "certify.hpp"
-#include "format.hpp"
-#include "front.hpp"
+#include "generate/boundary/boundary_front.hpp"
+#include "certify/certify.hpp"
+#include "common/format.hpp"
+#include "generate/paper_front.hpp"
 #include "frontpack/fill.hpp"
-#include "rng.hpp"
-#include "stop.hpp"
+#include "common/rng.hpp"
+#include "common/stop.hpp"
 
 namespace frontpack {
 
@@ -271,6 +271,15 @@ void Generator::on_progress(std::function<bool(const Progress&)> callback) {
 
 Packing Generator::run() {
   return run_fill(domain_, options_, progress_);
+}
+
+const char* to_string(Method method) noexcept {
+  switch (method) {
+    case Method::closed: return "closed";
+    case Method::open: return "open";
+    case Method::boundary: return "boundary";
+  }
+  return "unknown";
 }
 
 }  // namespace frontpack

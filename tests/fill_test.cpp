@@ -485,3 +485,15 @@ TEST(Fill, EveryPairKeepsHalfTheClearance) {
     }
   }
 }
+
+// `frontpack fill DOMAIN` runs fill(domain, FillOptions{}): the tool takes its default method and
+// radius spec from the library, and the spec must parse to the library's default distribution.
+TEST(FillOptions, DefaultsAreTheToolsAndTheSpecParsesToTheDefaultRadii) {
+  const fp::FillOptions defaults;
+  EXPECT_EQ(defaults.method, fp::Method::boundary);
+  EXPECT_TRUE(defaults.fill_voids);
+  const fp::Radii parsed = fp::parse_radii(fp::default_radius_spec);
+  EXPECT_EQ(parsed.describe(), defaults.radii.describe());
+  EXPECT_EQ(parsed.min(), 0.01);
+  EXPECT_EQ(parsed.max(), 0.05);
+}

@@ -516,7 +516,7 @@ TEST(Hostile, StarWithCrowdedEdgeBoxesNamesItsCrossing) {
 
 // Two holes in the star, each touching it at one of its vertices and the other at the origin:
 // with the star's ring they cut its inside in two. The sweep finds no edges meeting inside, and
-// the touches, all at points where vertices meet, are the hub pass's (validate.cpp, find_hubs()).
+// the touches, all at points where vertices meet, are the hub pass's (src/domain/validate.cpp, find_hubs()).
 TEST(Hostile, StarWithCrowdedEdgeBoxesAndHolesSplittingIt) {
   const std::size_t n = 20000;
   const fp::Ring outer = star(n);

@@ -641,7 +641,7 @@ TEST(IoRead, ControlCharactersInALineAreShownEscaped) {
 }
 
 // One rule for decimals out of the range of doubles, with the same words in every reader: WKT,
-// disk files, radius specs and size tables (numbers.hpp, README "Numbers"). Subnormal numbers
+// disk files, radius specs and size tables (src/common/numbers.hpp, README "Numbers"). Subnormal numbers
 // are kept: they round-trip through the writers (FormatsRoundTripEveryDouble).
 TEST(Numbers, OneRuleAndOneWordingInEveryReader) {
   const auto what = [](const std::function<void()>& read) {

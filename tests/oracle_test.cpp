@@ -343,7 +343,7 @@ struct ShapeQueries {
 };
 
 // The column (or row) boundaries the library's edge grid uses for a domain, recomputed the way
-// src/edge_grid.cpp does (EdgeGrid::build with max(4 V, 4096) target cells, boundaries()). White
+// src/domain/edge_grid.cpp does (EdgeGrid::build with max(4 V, 4096) target cells, boundaries()). White
 // box, but only to aim queries at the cells' lines and corners, where the half-open cells and
 // the parity walk meet: if the layout changes, these are merely more points.
 std::pair<std::vector<double>, std::vector<double>> grid_lines(fp::Box box, std::size_t vertices) {
@@ -995,7 +995,7 @@ TEST(OracleValidity, AgreesWithBoostGeometryOnRandomSmallPolygons) {
 
 // The same random cases, each repeated 48 times along a row (translated by 10 units, so the
 // copies are disjoint): the copies are valid together exactly when one is. A row makes rays from
-// the rings cross many others, so frontpack decides nesting with its sweep (ring_tree.cpp)
+// the rings cross many others, so frontpack decides nesting with its sweep (src/domain/ring_tree.cpp)
 // rather than ray by ray as for a single small case; the verdict and the kind of error must be
 // those of the single case, and the verdict Boost.Geometry's.
 TEST(OracleValidity, RowsOfCopiesAgreeWithBoostGeometry) {

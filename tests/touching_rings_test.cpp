@@ -1,6 +1,6 @@
 // Validation of domains whose rings touch in many places or nest deeply: checkerboards of parts
 // or holes meeting at corners, holes and parts touching one long ring, rings nested a hundred
-// deep. Validation finds which ring encloses which by one sweep (src/ring_tree.cpp); these cases
+// deep. Validation finds which ring encloses which by one sweep (src/domain/ring_tree.cpp); these cases
 // cost a ray through every ring, or brute force, per ring before it. Sizes stay small so that the
 // sanitizer build runs them fast; the large ones are benchmarks (bench/domain_bench.cpp).
 #include <gtest/gtest.h>
@@ -252,7 +252,7 @@ std::vector<fp::Ring> fan(int n) {
 
 }  // namespace
 
-// Hundreds of parts meeting at one point: their edges there meet pairwise (validate.cpp sorts
+// Hundreds of parts meeting at one point: their edges there meet pairwise (src/domain/validate.cpp sorts
 // them by angle about the point instead of classifying the pairs). Valid, as parts or as holes
 // of one polygon; one more part leaving the point along an edge of another overlaps it; two
 // holes meeting at the centre and again at the outer ends cut the polygon.

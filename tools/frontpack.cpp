@@ -169,7 +169,7 @@ int run_info(const DomainSource& src) {
 // ---------------------------------------------------------------------------------------------
 // fill
 
-constexpr const char* kDefaultRadius = "uniform:0.01,0.05";
+constexpr const char* kDefaultRadius = frontpack::default_radius_spec;
 
 // --memory-limit: bytes, with an optional suffix K, M, G or T (powers of 1024: 512M, 2G); 0 leaves
 // the library's default (three quarters of the machine's memory).
@@ -203,7 +203,7 @@ std::size_t parse_bytes(const char* option, const std::string& text) {
 
 struct FillArgs {
   DomainSource src;
-  std::string method = "boundary";
+  std::string method = frontpack::to_string(frontpack::FillOptions{}.method);
   std::string radius;  // empty: kDefaultRadius
   std::string seed = "0";
   std::string max_disks = std::to_string(frontpack::FillOptions{}.max_disks);

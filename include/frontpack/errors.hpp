@@ -28,6 +28,25 @@ class CancelledError : public Error {
   CancelledError();
 };
 
+/// Invalid options: a radius spec or size table, a window, a limit. The message names the option
+/// and the offending part.
+class OptionError : public Error {
+ public:
+  using Error::Error;
+};
+
+/// A request that would exceed FillOptions::max_disks or memory_limit, refused up front with the
+/// estimate in the message, or a run stopped at memory_limit; the message names the option to
+/// raise, by its library and its tool name (max_disks, --max-disks).
+class LimitError : public Error {
+ public:
+  LimitError(const std::string& message, std::size_t estimate) : Error(message), estimate_(estimate) {}
+  [[nodiscard]] std::size_t estimate() const noexcept { return estimate_; }
+
+ private:
+  std::size_t estimate_;
+};
+
 /// A file could not be opened, read or written.
 class IoError : public Error {
  public:

@@ -7,7 +7,7 @@
 //
 // Guarantee (for every accepted domain and options): no two disks of packing.disks overlap and
 // every disk lies in the closed domain, both decided exactly on the returned doubles by the
-// certifier (certify()), whose report is packing.certificate. Touching is allowed.
+// certifier (certify(), frontpack/certify.hpp), whose report is packing.certificate. Touching is allowed.
 #pragma once
 
 #include <cstddef>
@@ -15,29 +15,16 @@
 #include <functional>
 #include <memory>
 #include <optional>
-#include <span>
 #include <stop_token>
-#include <utility>
 #include <vector>
 
+#include "frontpack/certify.hpp"
 #include "frontpack/domain.hpp"
 #include "frontpack/errors.hpp"
 #include "frontpack/geometry.hpp"
 #include "frontpack/sizes.hpp"
 
 namespace frontpack {
-
-/// A request that would exceed FillOptions::max_disks or memory_limit, refused up front with the
-/// estimate in the message, or a run stopped at memory_limit; the message names the option to
-/// raise, by its library and its tool name (max_disks, --max-disks).
-class LimitError : public Error {
- public:
-  LimitError(const std::string& message, std::size_t estimate) : Error(message), estimate_(estimate) {}
-  [[nodiscard]] std::size_t estimate() const noexcept { return estimate_; }
-
- private:
-  std::size_t estimate_;
-};
 
 enum class Method : std::uint8_t {
   closed,  ///< Sec. 2: grows from three mutually tangent disks at the centre
@@ -51,9 +38,14 @@ enum class Method : std::uint8_t {
 
 [[nodiscard]] const char* to_string(Method method) noexcept;
 
+/// FillOptions{}.radii written as a radius spec (parse_radii()): what `frontpack fill` draws
+/// when given no --radius.
+inline constexpr const char* default_radius_spec = "uniform:0.01,0.05";
+
+/// The defaults are the tool's: `frontpack fill DOMAIN` runs fill(domain, FillOptions{}).
 struct FillOptions {
-  Method method = Method::closed;
-  Radii radii = Radii::uniform(0.01, 0.1);
+  Method method = Method::boundary;
+  Radii radii = Radii::uniform(0.01, 0.05);
   std::uint64_t seed = 0;
   /// Front check window M (Sec. 2.4.3): how many front disks are examined before and after the
   /// active segment to decide cases (b)-(d); 0 means the whole front. Overlaps with any other
@@ -106,15 +98,6 @@ struct Progress {
   double area = 0.0;  ///< the area of the disks generated so far (culled ones included)
 };
 
-/// The certifier's report.
-struct Certificate {
-  std::size_t generated = 0;        ///< disks produced by the generator
-  std::size_t culled = 0;           ///< removed because not entirely inside the domain (exact)
-  std::size_t dropped = 0;          ///< removed by the global overlap pass (0 for frontpack's generator)
-  std::size_t candidate_pairs = 0;  ///< pairs whose boxes met, each decided exactly
-  bool exact = true;                ///< every containment and every pair was decided exactly
-};
-
 /// Counters of the advancing front (what the algorithm did, for diagnostics).
 struct FillStats {
   std::size_t attempts = 0;          ///< tangent positions computed
@@ -153,27 +136,5 @@ class Generator {
   FillOptions options_;
   std::function<bool(const Progress&)> progress_;
 };
-
-/// What certify() found about an arbitrary set of disks.
-struct CertifyReport {
-  Certificate certificate;
-  std::vector<std::size_t> outside;                              ///< indices of disks not inside
-  std::vector<std::pair<std::size_t, std::size_t>> overlapping;  ///< index pairs (i < j), sorted
-  /// How bad it is, for reports. Which disks are outside and which pairs overlap is decided
-  /// exactly; these figures are computed in floating point from those decisions (approximate).
-  /// The pair of `overlapping` with the deepest overlap r_i + r_j - |c_i - c_j| (none if empty).
-  std::optional<std::pair<std::size_t, std::size_t>> deepest_overlap;
-  double deepest_overlap_depth = 0;
-  /// The disk of `outside` reaching farthest out: the largest r - d, d the signed distance from
-  /// its centre to the boundary (positive inside); infinity for a non-finite or negative disk.
-  std::optional<std::size_t> farthest_outside;
-  double farthest_outside_by = 0;
-};
-
-/// Certifies any set of disks against a domain, exactly: which disks are not inside the closed
-/// domain, and which pairs overlap (interiors intersect; touching is fine). Disks with a
-/// negative, NaN or infinite radius or centre are "outside". Pairs among outside disks are
-/// reported too. Throws CancelledError once `stop` is requested.
-[[nodiscard]] CertifyReport certify(const Domain& domain, std::span<const Disk> disks, std::stop_token stop = {});
 
 }  // namespace frontpack

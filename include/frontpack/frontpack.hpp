@@ -2,6 +2,7 @@
 // Umbrella header (CGAL-free). For CGAL interoperability include "frontpack/cgal.hpp".
 #pragma once
 
+#include "frontpack/certify.hpp"
 #include "frontpack/domain.hpp"
 #include "frontpack/errors.hpp"
 #include "frontpack/fill.hpp"

@@ -36,13 +36,6 @@
 
 namespace frontpack {
 
-/// Invalid options: a radius spec or size table, a window, a limit. The message names the option
-/// and the offending part.
-class OptionError : public Error {
- public:
-  using Error::Error;
-};
-
 /// What the fractions of a size table count.
 enum class Basis : std::uint8_t {
   number,  ///< fractions of the number of disks

@@ -1,0 +1,54 @@
+// frontpack: exact certification of a set of disks against a domain.
+//
+//   const frontpack::CertifyReport report = frontpack::certify(domain, disks);
+//   if (report.outside.empty() && report.overlapping.empty()) { /* a valid packing */ }
+//
+// fill() certifies its own output with the same functions (src/certify/); this header lets any
+// packing, from frontpack or elsewhere, be checked the same way. Every decision is exact on the
+// given doubles (docs/robustness.md).
+#pragma once
+
+#include <cstddef>
+#include <optional>
+#include <span>
+#include <stop_token>
+#include <utility>
+#include <vector>
+
+#include "frontpack/domain.hpp"
+#include "frontpack/geometry.hpp"
+
+namespace frontpack {
+
+/// The certifier's report.
+struct Certificate {
+  std::size_t generated = 0;        ///< disks produced by the generator
+  std::size_t culled = 0;           ///< removed because not entirely inside the domain (exact)
+  std::size_t dropped = 0;          ///< removed by the global overlap pass (0 for frontpack's generator)
+  std::size_t candidate_pairs = 0;  ///< pairs whose boxes met, each decided exactly
+  bool exact = true;                ///< every containment and every pair was decided exactly
+};
+
+/// What certify() found about an arbitrary set of disks.
+struct CertifyReport {
+  Certificate certificate;
+  std::vector<std::size_t> outside;                              ///< indices of disks not inside
+  std::vector<std::pair<std::size_t, std::size_t>> overlapping;  ///< index pairs (i < j), sorted
+  /// How bad it is, for reports. Which disks are outside and which pairs overlap is decided
+  /// exactly; these figures are computed in floating point from those decisions (approximate).
+  /// The pair of `overlapping` with the deepest overlap r_i + r_j - |c_i - c_j| (none if empty).
+  std::optional<std::pair<std::size_t, std::size_t>> deepest_overlap;
+  double deepest_overlap_depth = 0;
+  /// The disk of `outside` reaching farthest out: the largest r - d, d the signed distance from
+  /// its centre to the boundary (positive inside); infinity for a non-finite or negative disk.
+  std::optional<std::size_t> farthest_outside;
+  double farthest_outside_by = 0;
+};
+
+/// Certifies any set of disks against a domain, exactly: which disks are not inside the closed
+/// domain, and which pairs overlap (interiors intersect; touching is fine). Disks with a
+/// negative, NaN or infinite radius or centre are "outside". Pairs among outside disks are
+/// reported too. Throws CancelledError once `stop` is requested.
+[[nodiscard]] CertifyReport certify(const Domain& domain, std::span<const Disk> disks, std::stop_token stop = {});
+
+}  // namespace frontpack

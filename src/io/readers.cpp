@@ -1,0 +1,226 @@
+// Readers of disk files: CSV and Yade text, strict, exact (std::from_chars), locale-independent.
+#include <cerrno>
+#include <cmath>
+#include <cstring>
+#include <fstream>
+#include <istream>
+#include <string>
+#include <string_view>
+#include <system_error>
+#include <vector>
+
+#include "frontpack/io.hpp"
+#include "common/numbers.hpp"
+#include "common/read_file.hpp"
+
+namespace frontpack {
+
+namespace {
+
+using Kind = DiskFileError::Kind;
+
+bool is_blank(char c) {
+  return c == ' ' || c == '\t';
+}
+
+std::string_view trim(std::string_view s) {
+  while (!s.empty() && is_blank(s.front())) {
+    s.remove_prefix(1);
+  }
+  while (!s.empty() && is_blank(s.back())) {
+    s.remove_suffix(1);
+  }
+  return s;
+}
+
+// The offending text as quoted in a message: escaped (a NUL byte shows as \0) and shortened if
+// long (common/numbers.hpp).
+std::string quote(std::string_view s) {
+  return detail::quote_text(s);
+}
+
+// Reads lines, counting them, without their "\n" or "\r\n" and without a UTF-8 byte order mark at
+// the start of the file.
+class Lines {
+ public:
+  Lines(std::istream& in, std::string_view source) : in_(in), source_(source.empty() ? "<input>" : source) {}
+
+  bool next() {
+    if (!std::getline(in_, line_)) {
+      if (in_.bad()) {
+        throw IoError("cannot read '" + source_ + "'", source_);
+      }
+      return false;
+    }
+    ++number_;
+    if (!line_.empty() && line_.back() == '\r') {
+      line_.pop_back();
+    }
+    if (number_ == 1 && line_.starts_with("\xEF\xBB\xBF")) {
+      line_.erase(0, 3);
+    }
+    return true;
+  }
+  [[nodiscard]] std::string_view text() const { return line_; }
+  [[nodiscard]] std::size_t number() const { return number_; }
+  [[nodiscard]] const std::string& source() const { return source_; }
+
+  [[noreturn]] void fail(Kind kind, std::string detail, std::size_t column = 0) const {
+    throw DiskFileError(kind, std::move(detail), source_, number_ == 0 ? 1 : number_, column);
+  }
+  // Column (1-based) of a field that is a view into the current line.
+  [[nodiscard]] std::size_t column_of(std::string_view field) const {
+    return static_cast<std::size_t>(field.data() - line_.data()) + 1;
+  }
+
+ private:
+  std::istream& in_;
+  std::string source_;
+  std::string line_;
+  std::size_t number_ = 0;
+};
+
+// One number: the whole field, exactly as std::from_chars reads it, finite; out of the range of
+// doubles (overflowing, or underflowing to 0) it is refused, as by every reader (common/numbers.hpp).
+double parse_number(const Lines& lines, std::string_view field, const char* what) {
+  const std::size_t column = lines.column_of(field);
+  if (field.empty()) {
+    lines.fail(Kind::bad_number, std::string("expected a number for ") + what + ", got nothing", column);
+  }
+  const detail::Decimal d = detail::parse_decimal(field);
+  const double value = d.value;
+  if (d.status == detail::DecimalStatus::overflow || d.status == detail::DecimalStatus::underflow) {
+    lines.fail(Kind::bad_number, std::string(what) + " " + detail::out_of_range(field, d.status), column);
+  }
+  if (d.status != detail::DecimalStatus::ok) {
+    lines.fail(Kind::bad_number, std::string(what) + " " + quote(field) + " is not a number", column);
+  }
+  if (!std::isfinite(value)) {
+    lines.fail(Kind::non_finite, std::string(what) + " " + quote(field) + " is not finite", column);
+  }
+  return value;
+}
+
+Disk make_disk(const Lines& lines, std::string_view x, std::string_view y, std::string_view r) {
+  Disk d{{parse_number(lines, x, "x"), parse_number(lines, y, "y")}, parse_number(lines, r, "radius")};
+  if (!(d.radius > 0)) {
+    lines.fail(Kind::bad_radius, "radius must be > 0, got " + quote(r), lines.column_of(r));
+  }
+  return d;
+}
+
+// Fields of a line split at `separator`, trimmed of spaces and tabs (views into the line).
+std::vector<std::string_view> split(std::string_view line, char separator) {
+  std::vector<std::string_view> fields;
+  std::size_t start = 0;
+  for (;;) {
+    const std::size_t end = line.find(separator, start);
+    fields.push_back(trim(line.substr(start, end == std::string_view::npos ? std::string_view::npos : end - start)));
+    if (end == std::string_view::npos) {
+      return fields;
+    }
+    start = end + 1;
+  }
+}
+
+// Fields of a line separated by runs of spaces and tabs.
+std::vector<std::string_view> tokens(std::string_view line) {
+  std::vector<std::string_view> out;
+  std::size_t i = 0;
+  while (i < line.size()) {
+    while (i < line.size() && is_blank(line[i])) {
+      ++i;
+    }
+    const std::size_t start = i;
+    while (i < line.size() && !is_blank(line[i])) {
+      ++i;
+    }
+    if (i > start) {
+      out.push_back(line.substr(start, i - start));
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+std::vector<Disk> read_csv(std::istream& in, std::string_view source_name) {
+  Lines lines(in, source_name);
+  if (!lines.next()) {
+    lines.fail(Kind::empty_file, "empty file (expected the header line 'x,y,r')");
+  }
+  const std::vector<std::string_view> header = split(lines.text(), ',');
+  if (header.size() != 3 || header[0] != "x" || header[1] != "y" || header[2] != "r") {
+    lines.fail(Kind::missing_header, "expected the header line 'x,y,r', got " + quote(lines.text()));
+  }
+  std::vector<Disk> disks;
+  while (lines.next()) {
+    if (trim(lines.text()).empty()) {
+      lines.fail(Kind::blank_line, "blank line (a disk file has none)");
+    }
+    const std::vector<std::string_view> f = split(lines.text(), ',');
+    if (f.size() != 3) {
+      lines.fail(Kind::field_count, "expected 3 comma-separated numbers, got " + quote(lines.text()));
+    }
+    disks.push_back(make_disk(lines, f[0], f[1], f[2]));
+  }
+  return disks;
+}
+
+std::vector<Disk> read_yade(std::istream& in, std::string_view source_name) {
+  Lines lines(in, source_name);
+  std::vector<Disk> disks;
+  bool any = false;
+  while (lines.next()) {
+    any = true;
+    const std::vector<std::string_view> t = tokens(lines.text());
+    if (t.empty()) {
+      lines.fail(Kind::blank_line, "blank line (Yade's ymport.textExt fails on it)");
+    }
+    if (t[0] == "#format") {
+      if (t.size() < 2 || t[1] != "x_y_z_r") {
+        lines.fail(Kind::unsupported_format,
+                   "unsupported " + quote(lines.text()) + " (frontpack reads '#format x_y_z_r' only)",
+                   lines.column_of(t[0]));
+      }
+      continue;
+    }
+    if (t[0].front() == '#') {
+      continue;  // a comment, as for textExt
+    }
+    if (t.size() != 4) {
+      lines.fail(Kind::field_count, "expected 4 numbers 'x y z r' separated by spaces, got " + quote(lines.text()));
+    }
+    if (parse_number(lines, t[2], "z") != 0) {
+      lines.fail(Kind::nonzero_z, "z must be 0 (frontpack's disks are planar), got " + quote(t[2]),
+                 lines.column_of(t[2]));
+    }
+    disks.push_back(make_disk(lines, t[0], t[1], t[3]));
+  }
+  if (!any) {
+    lines.fail(Kind::empty_file, "empty file (expected '#format x_y_z_r' and lines 'x y 0 r')");
+  }
+  return disks;
+}
+
+std::vector<Disk> read_disks(const std::filesystem::path& path) {
+  Format format = Format::csv;
+  try {
+    format = format_from_path(path);
+  } catch (const OptionError&) {
+    // format_from_path lists every format written; name only those read.
+    const std::string ext = path.extension().string();
+    throw OptionError("'" + path.string() + "': " +
+                      (ext.empty() ? std::string("no file extension to tell the format by")
+                                   : "unknown disk file format '" + ext + "'") +
+                      "; frontpack reads .csv and Yade text (.txt, .yade)");
+  }
+  if (format != Format::csv && format != Format::yade) {
+    throw OptionError("'" + path.string() + "': reading " + to_string(format) +
+                      " files is not supported; frontpack reads .csv and Yade text (.txt, .yade)");
+  }
+  std::ifstream in = detail::open_for_reading(path);
+  return format == Format::csv ? read_csv(in, path.string()) : read_yade(in, path.string());
+}
+
+}  // namespace frontpack

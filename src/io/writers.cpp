@@ -1,0 +1,262 @@
+// Writers: SVG, CSV, Yade, LAMMPS, VTK PolyData; format names; write_file() through OutputFile.
+#include "frontpack/io.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <ostream>
+#include <string>
+
+#include "common/format.hpp"
+#include "frontpack/output_file.hpp"
+#include "common/stop.hpp"
+#include "frontpack/version.hpp"
+
+namespace frontpack {
+
+namespace {
+
+std::string fixed(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.3f", v);
+  return buf;
+}
+
+constexpr const char* known_extensions = ".csv, .txt or .yade (Yade), .data or .lmp (LAMMPS), .vtp, .svg";
+
+}  // namespace
+
+const char* to_string(Format format) noexcept {
+  switch (format) {
+    case Format::csv: return "csv";
+    case Format::yade: return "yade";
+    case Format::lammps: return "lammps";
+    case Format::vtp: return "vtp";
+    case Format::svg: return "svg";
+  }
+  return "unknown";
+}
+
+Format format_from_path(const std::filesystem::path& path) {
+  const std::string original = path.extension().string();
+  std::string ext = original;
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](char c) { return c >= 'A' && c <= 'Z' ? static_cast<char>(c - 'A' + 'a') : c; });
+  if (ext == ".csv") {
+    return Format::csv;
+  }
+  if (ext == ".txt" || ext == ".yade") {
+    return Format::yade;
+  }
+  if (ext == ".data" || ext == ".lmp") {
+    return Format::lammps;
+  }
+  if (ext == ".vtp") {
+    return Format::vtp;
+  }
+  if (ext == ".svg") {
+    return Format::svg;
+  }
+  std::string name(1, '\'');
+  name.append(path.string()).append(1, '\'');
+  if (ext == ".png") {
+    throw OptionError(name + ": PNG pictures are drawn by the frontpack tool (frontpack render), not by the library; " +
+                      "the library writes " + known_extensions);
+  }
+  if (ext.empty()) {
+    throw OptionError(name + ": no file extension to tell the format by; use " + known_extensions);
+  }
+  throw OptionError(name + ": unknown format '" + original + "'; use " + known_extensions);
+}
+
+Format format_from_name(std::string_view name) {
+  for (const Format f : {Format::csv, Format::yade, Format::lammps, Format::vtp, Format::svg}) {
+    if (name == to_string(f)) {
+      return f;
+    }
+  }
+  throw OptionError("unknown format '" + std::string(name) + "'; expected csv, yade, lammps, vtp or svg");
+}
+
+void write_svg(std::ostream& out, const Domain& domain, std::span<const Disk> disks, const SvgStyle& style,
+               std::stop_token stop) {
+  const Box b = domain.bbox();
+  const double margin = 0.02 * std::max(b.width(), b.height());
+  const double scale = style.width_px / (b.width() + 2 * margin);
+  const double height = (b.height() + 2 * margin) * scale;
+  const auto X = [&](double x) { return (x - b.xmin + margin) * scale; };
+  const auto Y = [&](double y) { return (b.ymax + margin - y) * scale; };
+  double rmin = 0;
+  double rmax = 0;
+  if (!disks.empty()) {
+    rmin = rmax = disks[0].radius;
+    for (const Disk& d : disks) {
+      rmin = std::min(rmin, d.radius);
+      rmax = std::max(rmax, d.radius);
+    }
+  }
+  out << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << fixed(style.width_px) << "\" height=\""
+      << fixed(height) << "\" viewBox=\"0 0 " << fixed(style.width_px) << ' ' << fixed(height) << "\">\n"
+      << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n<path fill=\"#f4f4f0\" fill-rule=\"evenodd\" "
+         "stroke=\"black\" stroke-width=\"1\" d=\"";
+  for (const Polygon& p : domain.polygons()) {
+    const auto ring = [&](const Ring& r) {
+      for (std::size_t k = 0; k < r.size(); ++k) {
+        out << (k == 0 ? 'M' : 'L') << fixed(X(r[k].x)) << ',' << fixed(Y(r[k].y)) << ' ';
+      }
+      out << "Z ";
+    };
+    ring(p.outer);
+    for (const Ring& h : p.holes) {
+      ring(h);
+    }
+  }
+  out << "\"/>\n<g stroke=\"#1d3557\" stroke-width=\"0.4\">\n";
+  for (std::size_t i = 0; i < disks.size(); ++i) {
+    detail::throw_if_stopped(stop, i);
+    const Disk& d = disks[i];
+    const double t = rmax > rmin ? (d.radius - rmin) / (rmax - rmin) : 0.5;
+    const int shade = style.colour_by_size ? static_cast<int>(200 - 120 * t) : 150;
+    out << "<circle cx=\"" << fixed(X(d.centre.x)) << "\" cy=\"" << fixed(Y(d.centre.y)) << "\" r=\""
+        << fixed(d.radius * scale) << "\" fill=\"rgb(" << shade / 2 << ',' << shade << ',' << std::min(255, shade + 40)
+        << ")\"/>\n";
+  }
+  out << "</g>\n</svg>\n";
+}
+
+void write_csv(std::ostream& out, std::span<const Disk> disks, std::stop_token stop) {
+  out << "x,y,r\n";
+  for (std::size_t i = 0; i < disks.size(); ++i) {
+    detail::throw_if_stopped(stop, i);
+    const Disk& d = disks[i];
+    out << detail::format_double(d.centre.x) << ',' << detail::format_double(d.centre.y) << ','
+        << detail::format_double(d.radius) << '\n';
+  }
+}
+
+void write_yade(std::ostream& out, std::span<const Disk> disks, std::stop_token stop) {
+  // ymport.textExt splits each line on whitespace, takes "#format F" as the format, skips other
+  // lines starting with '#', and fails on a blank line: so no blank line, not even at the end.
+  out << "#format x_y_z_r\n";
+  for (std::size_t i = 0; i < disks.size(); ++i) {
+    detail::throw_if_stopped(stop, i);
+    const Disk& d = disks[i];
+    out << detail::format_double(d.centre.x) << ' ' << detail::format_double(d.centre.y) << " 0 "
+        << detail::format_double(d.radius) << '\n';
+  }
+}
+
+void write_lammps(std::ostream& out, std::span<const Disk> disks, const Box& box, const LammpsOptions& options,
+                  std::stop_token stop) {
+  if (!(std::isfinite(options.density) && options.density > 0)) {
+    throw OptionError("LAMMPS density " + detail::format_double(options.density) + " must be a finite number > 0");
+  }
+  if (options.atom_type < 1) {
+    throw OptionError("LAMMPS atom type " + std::to_string(options.atom_type) + " must be >= 1");
+  }
+  if (box.empty() || !std::isfinite(box.xmin) || !std::isfinite(box.xmax) || !std::isfinite(box.ymin) ||
+      !std::isfinite(box.ymax)) {
+    throw OptionError("LAMMPS box must be finite and non-empty");
+  }
+  double rmax = 0;
+  for (std::size_t i = 0; i < disks.size(); ++i) {
+    const Disk& d = disks[i];
+    // Rounding is monotone and the bounds are doubles, so these floating-point tests give the
+    // same answers as exact arithmetic.
+    if (!(d.centre.x - d.radius >= box.xmin && d.centre.x + d.radius <= box.xmax && d.centre.y - d.radius >= box.ymin &&
+          d.centre.y + d.radius <= box.ymax)) {
+      throw OptionError("LAMMPS box [" + detail::format_double(box.xmin) + ", " + detail::format_double(box.xmax) +
+                        "] x [" + detail::format_double(box.ymin) + ", " + detail::format_double(box.ymax) +
+                        "] does not contain disk " + std::to_string(i) + " (centre " + detail::format_point(d.centre) +
+                        ", radius " + detail::format_double(d.radius) + ")");
+    }
+    rmax = std::max(rmax, d.radius);
+  }
+  // Dimension 2 needs a z range that straddles 0 (and a periodic z boundary); one largest
+  // diameter thick, the packing is also a valid monolayer for a 3D run.
+  const std::string zhi = detail::format_double(rmax > 0 ? rmax : 0.5);
+  const std::string density = detail::format_double(options.density);
+  const std::string type = std::to_string(options.atom_type);
+  out << "LAMMPS data file (atom_style sphere, 2D: z = 0) written by frontpack " << version_string << "\n\n"
+      << disks.size() << " atoms\n"
+      << type << " atom types\n\n"
+      << detail::format_double(box.xmin) << ' ' << detail::format_double(box.xmax) << " xlo xhi\n"
+      << detail::format_double(box.ymin) << ' ' << detail::format_double(box.ymax) << " ylo yhi\n"
+      << '-' << zhi << ' ' << zhi << " zlo zhi\n\n"
+      << "Atoms # sphere\n\n";
+  for (std::size_t i = 0; i < disks.size(); ++i) {
+    detail::throw_if_stopped(stop, i);
+    const Disk& d = disks[i];
+    out << i + 1 << ' ' << type << ' ' << detail::format_double(2 * d.radius) << ' ' << density << ' '
+        << detail::format_double(d.centre.x) << ' ' << detail::format_double(d.centre.y) << " 0\n";
+  }
+}
+
+void write_vtp(std::ostream& out, std::span<const Disk> disks, std::stop_token stop) {
+  // File format version 1.0: "offsets" holds each cell's end (version 2.0 would add a leading 0).
+  const std::string n = std::to_string(disks.size());
+  out << "<?xml version=\"1.0\"?>\n"
+      << "<VTKFile type=\"PolyData\" version=\"1.0\" byte_order=\"LittleEndian\" header_type=\"UInt64\">\n"
+      << "  <PolyData>\n"
+      << "    <Piece NumberOfPoints=\"" << n << "\" NumberOfVerts=\"" << n
+      << "\" NumberOfLines=\"0\" NumberOfStrips=\"0\" NumberOfPolys=\"0\">\n"
+      << "      <PointData Scalars=\"radius\">\n"
+      << "        <DataArray type=\"Float64\" Name=\"radius\" format=\"ascii\">\n";
+  for (std::size_t i = 0; i < disks.size(); ++i) {
+    detail::throw_if_stopped(stop, i);
+    out << detail::format_double(disks[i].radius) << '\n';
+  }
+  out << "        </DataArray>\n"
+      << "        <DataArray type=\"Int64\" Name=\"id\" format=\"ascii\">\n";
+  for (std::size_t i = 0; i < disks.size(); ++i) {
+    detail::throw_if_stopped(stop, i);
+    out << i << '\n';
+  }
+  out << "        </DataArray>\n"
+      << "      </PointData>\n"
+      << "      <Points>\n"
+      << "        <DataArray type=\"Float64\" Name=\"Points\" NumberOfComponents=\"3\" format=\"ascii\">\n";
+  for (std::size_t i = 0; i < disks.size(); ++i) {
+    detail::throw_if_stopped(stop, i);
+    out << detail::format_double(disks[i].centre.x) << ' ' << detail::format_double(disks[i].centre.y) << " 0\n";
+  }
+  out << "        </DataArray>\n"
+      << "      </Points>\n"
+      << "      <Verts>\n"
+      << "        <DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n";
+  for (std::size_t i = 0; i < disks.size(); ++i) {
+    detail::throw_if_stopped(stop, i);
+    out << i << '\n';
+  }
+  out << "        </DataArray>\n"
+      << "        <DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">\n";
+  for (std::size_t i = 0; i < disks.size(); ++i) {
+    detail::throw_if_stopped(stop, i);
+    out << i + 1 << '\n';
+  }
+  out << "        </DataArray>\n"
+      << "      </Verts>\n"
+      << "    </Piece>\n"
+      << "  </PolyData>\n"
+      << "</VTKFile>\n";
+}
+
+void write(std::ostream& out, Format format, const Domain& domain, std::span<const Disk> disks,
+           const WriteOptions& options) {
+  switch (format) {
+    case Format::csv: write_csv(out, disks, options.stop); break;
+    case Format::yade: write_yade(out, disks, options.stop); break;
+    case Format::lammps: write_lammps(out, disks, domain.bbox(), options.lammps, options.stop); break;
+    case Format::vtp: write_vtp(out, disks, options.stop); break;
+    case Format::svg: write_svg(out, domain, disks, options.svg, options.stop); break;
+  }
+}
+
+void write_file(const std::filesystem::path& path, Format format, const Domain& domain, std::span<const Disk> disks,
+                const WriteOptions& options) {
+  OutputFile file(path);
+  write(file.stream(), format, domain, disks, options);
+  file.commit();
+}
+
+}  // namespace frontpack
