@@ -21,9 +21,14 @@
 #include <type_traits>
 #include <utility>
 
-#include "generate/cell_grid.hpp"
 #include "common/huge_pages.hpp"
 #include "exact/overlap.hpp"
+#include "generate/acceptance.hpp"
+#include "generate/disk_grid.hpp"
+#include "generate/run_control.hpp"
+#include "generate/scale.hpp"
+#include "generate/tangency.hpp"
+#include "generate/void_buckets.hpp"
 
 namespace frontpack::detail {
 
