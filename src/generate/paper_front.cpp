@@ -57,48 +57,45 @@ class Front {
   static_assert(sizeof(Node) == 32);
 
  public:
-  Front(const FrontRequest& req, Rng& rng, std::vector<Disk>& out, FillStats& stats)
-      : req_(req), rng_(rng), out_(out), stats_(stats), control_(req.max_disks, req.tick) {
-    // Work in coordinates local to the box's lower-left corner, so that a translated domain
-    // gives the same computation (and small numbers for domains far from the origin).
-    // And in the unit of WorkScale (1 but for rmax outside [2^-300, 2^300]).
-    unit_ = WorkScale(req.radii->max());
-    origin_ = Point{req.box.xmin, req.box.ymin};
-    box_ = Box{0, 0, (req.box.xmax - origin_.x) * unit_.k, (req.box.ymax - origin_.y) * unit_.k};
-    rmax_ = req.radii->max() * unit_.k;
-    clearance_ = req.clearance * unit_.k;
-    scale_ = LengthScale(rmax_);
-    margin_ = clearance_ / 2;
-    band_ = clearance_ / 4;
+  Front(const FrontSettings& req, const Box& region, Rng& rng, std::vector<Disk>& out, FillStats& stats)
+      : req_(req),
+        rng_(rng),
+        out_(out),
+        stats_(stats),
+        frame_(*req.radii, req.clearance, region),
+        control_(req.max_disks, req.tick) {
+    box_ = Box{0, 0, frame_.width, frame_.height};
+    margin_ = frame_.clearance / 2;
+    band_ = frame_.clearance / 4;
     window_ = req.window == 0 ? std::numeric_limits<std::size_t>::max() : req.window;
     const double long_side = std::max(box_.width(), box_.height());
     const double short_side = std::min(box_.width(), box_.height());
     list_ = !Open && !(long_side <= kListAspect * short_side);  // NaN-safe: a degenerate box lists
     fill_voids_ = req.fill_voids;
-    classes_ = RadiusClasses<kVoidClasses>(req.radii->min() * unit_.k, rmax_);
+    classes_ = RadiusClasses<kVoidClasses>(frame_.rmin, frame_.rmax);
 
     // The memory limit: the grid's cell heads, then peak_bytes_per_disk per disk generated.
-    grid_ = CellGrid(box_.xmin, box_.ymin, box_.width(), box_.height(), rmax_);
+    grid_ = CellGrid(box_.xmin, box_.ymin, box_.width(), box_.height(), frame_.rmax);
     const std::size_t grid_bytes = grid_.cells() * sizeof(std::int32_t);
     if (req.memory_limit != 0) {
       if (grid_bytes >= req.memory_limit) {
         throw_memory_limit(req.memory_limit,
                            "the grid over a polygon's box (" + std::to_string(grid_.cells()) + " cells) takes " +
                                std::to_string(grid_bytes) + " bytes",
-                           count_of(estimate_disks(req.box, *req.radii), 1e18));
+                           count_of(estimate_disks(region, *req.radii), 1e18));
       }
       control_.limit_memory(req.memory_limit - grid_bytes);
     }
     fixed_bytes_ = grid_bytes;
 
-    const double estimate = estimate_disks(req.box, *req.radii);
+    const double estimate = estimate_disks(region, *req.radii);
     // Room for every disk the front can make: each lies within 5 rmax and two clearances of the
     // box (a disk on the front within 2 rmax and a clearance of a centre in the box, one in a void
     // within as much again of the front's), bound_disks(). A vector that outgrew its reservation
     // held its old and its new array at once, 96 bytes per node (an open form on a 1e-7 high
     // sliver generated 1.7 times the estimate and took 1.3 GB). Reserved pages cost nothing until
     // written; the disk budget (max_disks, the memory limit) caps it.
-    const double bound = bound_disks(req.box, 5 * req.radii->max() + 2 * req.clearance, *req.radii);
+    const double bound = bound_disks(region, 5 * req.radii->max() + 2 * req.clearance, *req.radii);
     const double room = static_cast<double>(control_.budget() - std::min(control_.budget(), out_.size()));
     const std::size_t reserve =
         count_of(std::min(std::max(std::isfinite(bound) ? bound * 1.1 : 0.0, estimate * 1.3), room) + 64, 1e9);
@@ -131,7 +128,7 @@ class Front {
     double r = draw();
     std::size_t skips = 0;
     while (active_ > 0 && skips <= front_size_ + 1) {
-      if (control_.stop(placed(), area_ * unit_.inv_k * unit_.inv_k, result)) {
+      if (control_.stop(placed(), area_ * frame_.unit.inv_k * frame_.unit.inv_k, result)) {
         break;
       }
       if (!segment_active(cur)) {
@@ -171,7 +168,7 @@ class Front {
     for (auto& v : voids_) {
       release(v);
     }
-    move_out(nodes_, kFirstDisk, origin_, unit_.inv_k, out_);
+    move_out(nodes_, kFirstDisk, frame_.origin, frame_.unit.inv_k, out_);
     result.fixed_bytes = fixed_bytes_;
     return result;
   }
@@ -275,7 +272,7 @@ class Front {
         }
       }
     }
-    const double reach = (p.r_hi + rmax_) * (1 + 1e-9);
+    const double reach = (p.r_hi + frame_.rmax) * (1 + 1e-9);
     const std::int64_t c0 = col(x - reach);
     const std::int64_t c1 = col(x + reach);
     const std::int64_t r0 = row(y - reach);
@@ -304,12 +301,12 @@ class Front {
   }
 
   bool tangent(std::int32_t c, std::int32_t n, double r, double& px, double& py, bool left = Open) const {
-    const double gap = r + clearance_;
+    const double gap = r + frame_.clearance;
     if (!is_wall(c) && !is_wall(n)) {
       const Node& cn = nodes_[static_cast<std::size_t>(c)];
       const Node& nn = nodes_[static_cast<std::size_t>(n)];
       // Left (open form) or right (closed form) of c -> n.
-      return tangent_to_two(cn.x, cn.y, cn.r + gap, nn.x, nn.y, nn.r + gap, left, scale_, px, py);
+      return tangent_to_two(cn.x, cn.y, cn.r + gap, nn.x, nn.y, nn.r + gap, left, frame_.scale, px, py);
     }
     if (is_wall(c) && is_wall(n)) {
       // A corner of two walls (Sec. 3: D1 in the corner of Bl and Bb).
@@ -538,7 +535,7 @@ class Front {
     const Node& o = nodes_[static_cast<std::size_t>(c)];
     const double dx = o.x - ox_;
     const double dy = o.y - oy_;
-    const double far = 6.06 * static_cast<double>(window_ + 1) * rmax_;
+    const double far = 6.06 * static_cast<double>(window_ + 1) * frame_.rmax;
     return dx * dx + dy * dy <= far * far;
   }
 
@@ -743,14 +740,12 @@ class Front {
   // Sec. 2.1: three mutually tangent disks D1, D2, D3, anticlockwise, at the start point; the
   // front D1 -> D2 -> D3 -> D1.
   std::int32_t start_closed() {
-    const Point s =
-        req_.start ? Point{(req_.start->x - origin_.x) * unit_.k, (req_.start->y - origin_.y) * unit_.k}
-                   : Point{box_.xmax / 2, box_.ymax / 2};
+    const Point s = req_.start ? frame_.local(*req_.start) : Point{box_.xmax / 2, box_.ymax / 2};
     const double r1 = draw();
     const double r2 = draw();
     const double r3 = draw();
     const std::int32_t d1 = add_node(s.x, s.y, r1);
-    const std::int32_t d2 = add_node(s.x + r1 + r2 + clearance_, s.y, r2);
+    const std::int32_t d2 = add_node(s.x + r1 + r2 + frame_.clearance, s.y, r2);
     // D3 on the left of D1 -> D2 makes the triangle anticlockwise: compute it with the open
     // form's side convention, then restore the closed form's.
     double px = 0;
@@ -779,18 +774,14 @@ class Front {
     return kLeft;
   }
 
-  double draw() { return req_.radii->quantile(rng_.uniform()) * unit_.k; }
+  double draw() { return frame_.draw(rng_); }
 
-  const FrontRequest& req_;
+  const FrontSettings& req_;
   Rng& rng_;
   std::vector<Disk>& out_;
   FillStats& stats_;
-  WorkScale unit_;
-  Point origin_;
-  Box box_;
-  double rmax_ = 0;
-  LengthScale scale_;  // for tangent_to_two
-  double clearance_ = 0;
+  RunFrame frame_;
+  Box box_;  // local: (0, 0) to (width, height)
   double margin_ = 0;
   double band_ = 0;
   std::size_t window_ = 5;
@@ -824,12 +815,13 @@ class Front {
 
 }  // namespace
 
-FrontResult advance_front(const FrontRequest& req, Rng& rng, std::vector<Disk>& out, FillStats& stats) {
-  if (req.method == Method::open) {
-    Front<true> front(req, rng, out, stats);
+FrontResult advance_front(const FrontSettings& settings, const Box& box, Rng& rng, std::vector<Disk>& out,
+                          FillStats& stats) {
+  if (settings.method == Method::open) {
+    Front<true> front(settings, box, rng, out, stats);
     return front.run();
   }
-  Front<false> front(req, rng, out, stats);
+  Front<false> front(settings, box, rng, out, stats);
   return front.run();
 }
 

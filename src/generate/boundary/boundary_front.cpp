@@ -124,27 +124,21 @@ class BoundaryFront {
   };
 
  public:
-  BoundaryFront(const BoundaryRequest& req, Rng& rng, std::vector<Disk>& out, FillStats& stats)
-      : req_(req), rng_(rng), out_(out), stats_(stats), control_(req.max_disks, req.tick), out_before_(out.size()) {
-    Box box;
-    for (const Point& p : req.polygon->outer) {
-      box.extend(p);
-    }
-    // Local coordinates, in the unit of WorkScale (1 but for rmax outside [2^-300, 2^300]).
-    unit_ = WorkScale(req.radii->max());
-    origin_ = Point{box.xmin, box.ymin};
-    width_ = (box.xmax - box.xmin) * unit_.k;
-    height_ = (box.ymax - box.ymin) * unit_.k;
-    rmin_ = req.radii->min() * unit_.k;
-    rmax_ = req.radii->max() * unit_.k;
-    clearance_ = req.clearance * unit_.k;
-    scale_ = LengthScale(rmax_);
-    margin_ = clearance_ / 2;
-    band_ = clearance_ / 4;
-    box_ = Box{-clearance_, -clearance_, width_ + clearance_, height_ + clearance_};
-    classes_ = RadiusClasses<kClasses>(rmin_, rmax_);
+  BoundaryFront(const FrontSettings& req, const Polygon& polygon, Rng& rng, std::vector<Disk>& out, FillStats& stats)
+      : req_(req),
+        polygon_(polygon),
+        rng_(rng),
+        out_(out),
+        stats_(stats),
+        control_(req.max_disks, req.tick),
+        out_before_(out.size()),
+        frame_(*req.radii, req.clearance, outer_box(polygon)) {
+    margin_ = frame_.clearance / 2;
+    band_ = frame_.clearance / 4;
+    box_ = Box{-frame_.clearance, -frame_.clearance, frame_.width + frame_.clearance, frame_.height + frame_.clearance};
+    classes_ = RadiusClasses<kClasses>(frame_.rmin, frame_.rmax);
 
-    estimate_ = estimate_disks(box, *req.radii);
+    estimate_ = estimate_disks(outer_box(polygon), *req.radii);
     // (Every disk lies in the polygon: at most its box's area, bound_disks(), 1.18 estimates.)
     const auto reserve = count_of(estimate_ * 1.3 + 64, 1e9);
     nodes_.reserve(reserve);
@@ -157,12 +151,21 @@ class BoundaryFront {
     }
   }
 
+  // The polygon's bounding box (its outer ring's).
+  static Box outer_box(const Polygon& polygon) noexcept {
+    Box box;
+    for (const Point& p : polygon.outer) {
+      box.extend(p);
+    }
+    return box;
+  }
+
   FrontResult run() {
     FrontResult result;
     double r = draw();
     int cls = class_of(r);  // r's void class (r stays until it is placed)
     for (;;) {
-      if (control_.stop(placed(), area_ * unit_.inv_k * unit_.inv_k, result)) {
+      if (control_.stop(placed(), area_ * frame_.unit.inv_k * frame_.unit.inv_k, result)) {
         break;
       }
       Gap g{kNone, kNone};
@@ -234,7 +237,7 @@ class BoundaryFront {
     release(cell_walls_);
     release(wall_ids_);
     release(walled_);
-    move_out(nodes_, corners_.size(), origin_, unit_.inv_k, out_);
+    move_out(nodes_, corners_.size(), frame_.origin, frame_.unit.inv_k, out_);
     result.fixed_bytes = fixed_bytes_;
     return result;
   }
@@ -294,7 +297,7 @@ class BoundaryFront {
     return static_cast<std::uint32_t>(e) < static_cast<std::uint32_t>(corner_count_);
   }
   [[nodiscard]] int class_of(double r) const noexcept { return classes_.of(r); }
-  double draw() { return req_.radii->quantile(rng_.uniform()) * unit_.k; }
+  double draw() { return frame_.draw(rng_); }
 
   // ------------------------------------------------------------------------------------------
   // Walls, reflex vertices and the initial gaps.
@@ -366,10 +369,10 @@ class BoundaryFront {
           corner_count_ = static_cast<std::int32_t>(corners_.size());
           corner_at_.push_back(Point{wi.bx, wi.by});
         }
-        if (sharp && wi.len < 2 * rmax_) {
+        if (sharp && wi.len < 2 * frame_.rmax) {
           rough_[static_cast<std::size_t>(first) + i] = 1;
         }
-        if (sharp && wo.len < 2 * rmax_) {
+        if (sharp && wo.len < 2 * frame_.rmax) {
           rough_[static_cast<std::size_t>(first) + (i + 1) % n] = 1;
         }
         if (turn > sharpest_turn) {
@@ -386,14 +389,14 @@ class BoundaryFront {
         start_at(sharpest, wi.tx * wo.ty - wi.ty * wo.tx > 1e-12, vertex[sharpest]);
       }
     };
-    add_ring(req_.polygon->outer);
-    for (const Ring& hole : req_.polygon->holes) {
+    add_ring(polygon_.outer);
+    for (const Ring& hole : polygon_.holes) {
       add_ring(hole);
     }
     any_rough_ = std::find(rough_.begin(), rough_.end(), 1) != rough_.end();
   }
 
-  [[nodiscard]] Point local(Point p) const noexcept { return {(p.x - origin_.x) * unit_.k, (p.y - origin_.y) * unit_.k}; }
+  [[nodiscard]] Point local(Point p) const noexcept { return frame_.local(p); }
 
   // ------------------------------------------------------------------------------------------
   // The grid: placed disks in linked cells (reflex vertices are nodes, but not in the cells: see
@@ -401,9 +404,9 @@ class BoundaryFront {
   // can only cross those).
 
   void setup_grid() {
-    grid_ = CellGrid(0, 0, width_, height_, rmax_);
-    probes_inside_ = clearance_ < rmax_ && !grid_.coarse;
-    // The memory limit (BoundaryRequest::memory_limit) counts what is built here: the cell heads
+    grid_ = CellGrid(0, 0, frame_.width, frame_.height, frame_.rmax);
+    probes_inside_ = frame_.clearance < frame_.rmax && !grid_.coarse;
+    // The memory limit (FrontSettings::memory_limit) counts what is built here: the cell heads
     // (4 bytes a cell) and 12 bytes a block of cells; the (cell, wall) pairs, 16 bytes each while
     // they are listed (8, and as much again while the list moves or is copied grouped), then 12
     // (the grouped copy and the lists kept) with 1,028 bytes a walled block; then
@@ -441,7 +444,7 @@ class BoundaryFront {
     // that the work follows the walls' length and not the area of their boxes (a diagonal wall's
     // box is a quarter of the grid: testing every cell of it took 49 ms, 14% of the front, on a
     // 1M-disk diamond), and nothing is kept per cell of the grid.
-    const double reach = (rmax_ + clearance_) * (1 + 1e-9) + 4 * clearance_;
+    const double reach = (frame_.rmax + frame_.clearance) * (1 + 1e-9) + 4 * frame_.clearance;
     struct Pair {
       // The cell's block, then its place in the block (the lists' order): below
       // (nx + kBlock - 1) (ny + kBlock - 1), which CellGrid's cap of about 16M cells keeps far
@@ -645,11 +648,11 @@ class BoundaryFront {
   // left of a -> b. False if there is none.
 
   bool tangent(std::int32_t a, std::int32_t b, double r, double& px, double& py) const noexcept {
-    const double g = r + clearance_;
+    const double g = r + frame_.clearance;
     if (!is_wall(a) && !is_wall(b)) {
       const Node& an = nodes_[static_cast<std::size_t>(a)];
       const Node& bn = nodes_[static_cast<std::size_t>(b)];
-      return tangent_to_two(an.x, an.y, an.r + g, bn.x, bn.y, bn.r + g, /*left=*/true, scale_, px, py);
+      return tangent_to_two(an.x, an.y, an.r + g, bn.x, bn.y, bn.r + g, /*left=*/true, frame_.scale, px, py);
     }
     if (is_wall(a) && is_wall(b)) {
       // Where the two walls' lines, moved in by g, cross.
@@ -872,7 +875,7 @@ class BoundaryFront {
         return e;
       }
     }
-    const double r_reach = (p.r_hi + rmax_) * (1 + 1e-9);  // depth() can say yes up to r_hi + o.r
+    const double r_reach = (p.r_hi + frame_.rmax) * (1 + 1e-9);  // depth() can say yes up to r_hi + o.r
     const std::int64_t c0 = probe_col(p.x - r_reach);
     const std::int64_t c1 = probe_col(p.x + r_reach);
     const std::int64_t r0 = probe_row(p.y - r_reach);
@@ -924,7 +927,7 @@ class BoundaryFront {
     if (is_wall(e)) {
       const Wall& wl = walls_[wall_index(e)];
       const double u = (px - wl.ax) * wl.tx + (py - wl.ay) * wl.ty;
-      return u >= -clearance_ && u <= wl.len + clearance_;
+      return u >= -frame_.clearance && u <= wl.len + frame_.clearance;
     }
     if (is_corner(e)) {
       const Corner& c = corners_[static_cast<std::size_t>(e)];
@@ -997,8 +1000,8 @@ class BoundaryFront {
   template <class T>
   [[nodiscard]] T pocket_of_nodes(T ax, T ay, T ra, T bx, T by, T rb, T dx, T dy, T rd) const noexcept {
     // Relative to a's centre: |p|^2 = (ra + rho)^2 and, subtracting, c_i . p = alpha_i + beta_i rho.
-    // At the scale of rmax (scale_): the degeneracy test below compares fourth powers of lengths.
-    const double k = scale_.k;
+    // At the scale of rmax (frame_.scale): the degeneracy test below compares fourth powers of lengths.
+    const double k = frame_.scale.k;
     bx = (bx - ax) * k;
     by = (by - ay) * k;
     dx = (dx - ax) * k;
@@ -1025,7 +1028,7 @@ class BoundaryFront {
     const T vy = (bx * beta_d - dx * beta_b) * inv;
     // On the left of a -> b: the pocket, not the circle on the far side.
     const T rho = smallest_root(ux, uy, vx, vy, ra, [&](T t) { return bx * (uy + t * vy) - by * (ux + t * vx) > 0.0; });
-    const T scaled = select(rho < 0.0, rho, rho * scale_.inv_k);
+    const T scaled = select(rho < 0.0, rho, rho * frame_.scale.inv_k);
     if constexpr (std::is_same_v<T, double>) {
       return scaled;
     } else {
@@ -1188,7 +1191,7 @@ class BoundaryFront {
   // push_void() with the pocket `cap` already computed (-1: none).
   void keep_void(Gap g, int k, std::int32_t blocker, double cap) {
     if (cap >= 0) {
-      k = cap < rmin_ ? 0 : std::min(k, class_of(cap));
+      k = cap < frame_.rmin ? 0 : std::min(k, class_of(cap));
     }
     if (k > 0) {
       g.bound = blocker;
@@ -1229,9 +1232,9 @@ class BoundaryFront {
     ++seeds_;
     const double r2 = draw();
     for (int t = 0; t < kSeedTries; ++t) {
-      const double sx = width_ * rng_.uniform();
-      const double sy = height_ * rng_.uniform();
-      const double tx = sx + r + r2 + clearance_;
+      const double sx = frame_.width * rng_.uniform();
+      const double sy = frame_.height * rng_.uniform();
+      const double tx = sx + r + r2 + frame_.clearance;
       if (!inside_polygon(sx, sy) || !fits(sx, sy, r) || !fits(tx, sy, r2)) {
         continue;
       }
@@ -1253,7 +1256,7 @@ class BoundaryFront {
   // Whether a disk at (x, y) of radius r crosses no wall and overlaps no disk (with its centre
   // inside the polygon, it then lies inside).
   bool fits(double x, double y, double r) {
-    if (!(x - r >= 0 && x + r <= width_ && y - r >= 0 && y + r <= height_)) {
+    if (!(x - r >= 0 && x + r <= frame_.width && y - r >= 0 && y + r <= frame_.height)) {
       return false;
     }
     return deepest<true>(probe(x, y, r)) == kNone;
@@ -1346,7 +1349,7 @@ class BoundaryFront {
     const Node& b = nodes_[static_cast<std::size_t>(y)];
     const double dx = a.x - b.x;
     const double dy = a.y - b.y;
-    const double reach = a.r + b.r + 4 * rmin_;
+    const double reach = a.r + b.r + 4 * frame_.rmin;
     return dx * dx + dy * dy < reach * reach;
   }
 
@@ -1405,7 +1408,7 @@ class BoundaryFront {
                                                  ? std::array<double, 2>{pocket(x, n, g.bound), pocket(n, y, g.bound)}
                                                  : pocket_pair(x, n, y, g.bound);
           for (std::size_t i = 0; i < 2; ++i) {
-            if (caps[i] >= 0 && caps[i] < rmax_) {
+            if (caps[i] >= 0 && caps[i] < frame_.rmax) {
               link(split[i]);
               keep_void(split[i], kClasses - 1, g.bound, caps[i]);
             } else {
@@ -1475,17 +1478,15 @@ class BoundaryFront {
     return false;
   }
 
-  const BoundaryRequest& req_;
+  const FrontSettings& req_;
+  const Polygon& polygon_;
   Rng& rng_;
   std::vector<Disk>& out_;
   FillStats& stats_;
   RunControl control_;
   std::size_t out_before_;  // out_.size() until the run moves the nodes out (placed())
-  WorkScale unit_;
-  Point origin_;
-  double width_ = 0, height_ = 0;
-  double rmin_ = 0, rmax_ = 0, clearance_ = 0, margin_ = 0, band_ = 0;
-  LengthScale scale_;  // for tangent_to_two
+  RunFrame frame_;
+  double margin_ = 0, band_ = 0;
   RadiusClasses<kClasses> classes_;
   Box box_;              // the polygon's box (local coordinates) grown by the clearance
   double estimate_ = 0;  // of the disks the box takes (estimate_disks())
@@ -1527,8 +1528,9 @@ class BoundaryFront {
 
 }  // namespace
 
-FrontResult advance_boundary(const BoundaryRequest& req, Rng& rng, std::vector<Disk>& out, FillStats& stats) {
-  BoundaryFront front(req, rng, out, stats);
+FrontResult advance_boundary(const FrontSettings& settings, const Polygon& polygon, Rng& rng, std::vector<Disk>& out,
+                             FillStats& stats) {
+  BoundaryFront front(settings, polygon, rng, out, stats);
   return front.run();
 }
 
