@@ -24,7 +24,6 @@
 #include <numbers>
 
 #include "common/huge_pages.hpp"
-#include "exact/overlap.hpp"
 #include "generate/acceptance.hpp"
 #include "generate/disk_grid.hpp"
 #include "generate/scale.hpp"
@@ -63,10 +62,9 @@ class Front {
         out_(out),
         stats_(stats),
         frame_(*req.radii, req.clearance, region),
+        overlap_(frame_.clearance, stats),
         control_(req.max_disks, req.tick) {
     box_ = Box{0, 0, frame_.width, frame_.height};
-    margin_ = frame_.clearance / 2;
-    band_ = frame_.clearance / 4;
     window_ = req.window == 0 ? std::numeric_limits<std::size_t>::max() : req.window;
     const double long_side = std::max(box_.width(), box_.height());
     const double short_side = std::min(box_.width(), box_.height());
@@ -205,50 +203,22 @@ class Front {
   [[nodiscard]] std::int64_t row(double y) const noexcept { return grid_.row(y); }
   [[nodiscard]] std::size_t cell_of(double x, double y) const noexcept { return grid_.cell_of(x, y); }
 
-  [[nodiscard]] Probe probe(double x, double y, double r) const noexcept { return Probe::at(x, y, r, margin_, band_); }
-
-  // Whether the candidate comes closer to disk o than r + o.r + margin: "overlaps" for the
-  // generator. The margin (half the clearance) keeps every accepted pair apart by more than the
-  // rounding of the output (box corner + local position) can take away, so that no pair overlaps
-  // in the coordinates written out; tangent placements, at the full clearance, always pass.
-  // Outside a narrow band around that distance floating point decides; inside it, the exact
-  // predicate does.
-  bool overlaps(const Probe& p, const Node& o) {
-    const double dx = p.x - o.x;
-    const double dy = p.y - o.y;
-    const double d2 = dx * dx + dy * dy;
-    const double hi = p.r_hi + o.r;
-    if (d2 >= hi * hi) {
-      return false;
-    }
-    const double lo = p.r_lo + o.r;
-    if (lo > 0 && d2 < lo * lo) {
-      return true;
-    }
-    return overlaps_exact(p, o);
-  }
-
-  // Out of line, so that the scan loops keep the disks they test in registers (inlined, the
-  // call's arguments made them copy every disk to the stack).
-  [[gnu::noinline, gnu::cold]] bool overlaps_exact(const Probe& p, const Node& o) {
-    ++stats_.exact_checks;
-    return disks_closer_than_exact({p.x, p.y}, p.r, {o.x, o.y}, o.r, margin_);
-  }
+  [[nodiscard]] Probe probe(double x, double y, double r) const noexcept { return overlap_.probe(x, y, r); }
 
   // Whether a disk at (x, y, r) crosses wall w (open form). A disk within the band of a wall
   // counts as crossing it: walls only guide the generator; containment in the domain is decided
   // exactly by the certifier.
   [[nodiscard]] bool crosses_wall(std::int32_t w, double x, double y, double r) const noexcept {
     switch (w) {
-      case kLeft: return x - r < box_.xmin + band_;
-      case kRight: return x + r > box_.xmax - band_;
-      default: return y - r < box_.ymin + band_;
+      case kLeft: return x - r < box_.xmin + overlap_.band();
+      case kRight: return x + r > box_.xmax - overlap_.band();
+      default: return y - r < box_.ymin + overlap_.band();
     }
   }
 
   // Whether a disk at (x, y, r) overlaps front node v (a disk or a wall).
   bool overlaps_node(const Probe& p, std::int32_t v) {
-    return is_wall(v) ? Open && crosses_wall(v, p.x, p.y, p.r) : overlaps(p, nodes_[static_cast<std::size_t>(v)]);
+    return is_wall(v) ? Open && crosses_wall(v, p.x, p.y, p.r) : overlap_.overlaps(p, nodes_[static_cast<std::size_t>(v)]);
   }
 
   // Whether a disk at (x, y, r) overlaps any placed disk or any wall, other than walls c and n.
@@ -263,7 +233,7 @@ class Front {
     const double r = p.r;
     if constexpr (Open) {
       const bool clear_of_walls =
-          x - r >= box_.xmin + band_ && x + r <= box_.xmax - band_ && y - r >= box_.ymin + band_;
+          x - r >= box_.xmin + overlap_.band() && x + r <= box_.xmax - overlap_.band() && y - r >= box_.ymin + overlap_.band();
       if (!clear_of_walls) {  // most candidates are: one test for the three walls
         for (const std::int32_t w : {kLeft, kBottom, kRight}) {
           if (w != c && w != n && crosses_wall(w, x, y, r)) {
@@ -278,7 +248,7 @@ class Front {
     const std::int64_t r0 = row(y - reach);
     const std::int64_t r1 = row(y + reach);
     return visit_cells(head_.data(), grid_.nx, nodes_.data(), kNone, c0, c1, r0, r1,
-                       [&](std::int32_t /*d*/, const Node& o) { return overlaps(p, o); });
+                       [&](std::int32_t /*d*/, const Node& o) { return overlap_.overlaps(p, o); });
   }
 
   // ------------------------------------------------------------------------------------------
@@ -781,9 +751,8 @@ class Front {
   std::vector<Disk>& out_;
   FillStats& stats_;
   RunFrame frame_;
+  OverlapTest overlap_;
   Box box_;  // local: (0, 0) to (width, height)
-  double margin_ = 0;
-  double band_ = 0;
   std::size_t window_ = 5;
   RunControl control_;
   std::size_t fixed_bytes_ = 0;  // the grid's, for the memory limit's message

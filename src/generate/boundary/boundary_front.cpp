@@ -22,7 +22,6 @@
 #include <utility>
 
 #include "common/huge_pages.hpp"
-#include "exact/overlap.hpp"
 #include "generate/acceptance.hpp"
 #include "generate/disk_grid.hpp"
 #include "generate/run_control.hpp"
@@ -132,9 +131,8 @@ class BoundaryFront {
         stats_(stats),
         control_(req.max_disks, req.tick),
         out_before_(out.size()),
-        frame_(*req.radii, req.clearance, outer_box(polygon)) {
-    margin_ = frame_.clearance / 2;
-    band_ = frame_.clearance / 4;
+        frame_(*req.radii, req.clearance, outer_box(polygon)),
+        overlap_(frame_.clearance, stats) {
     box_ = Box{-frame_.clearance, -frame_.clearance, frame_.width + frame_.clearance, frame_.height + frame_.clearance};
     classes_ = RadiusClasses<kClasses>(frame_.rmin, frame_.rmax);
 
@@ -776,30 +774,9 @@ class BoundaryFront {
   // ------------------------------------------------------------------------------------------
   // Overlap tests.
 
-  [[nodiscard]] Probe probe(double x, double y, double r) const noexcept { return Probe::at(x, y, r, margin_, band_); }
-
-  // How far the candidate comes into disk o's keep-out distance r + o.r + margin (> 0: it
-  // overlaps); as generate/paper_front.cpp, floating point outside a narrow band, the exact predicate inside.
-  double depth(const Probe& p, const Node& o) {
-    const double dx = p.x - o.x;
-    const double dy = p.y - o.y;
-    const double d2 = dx * dx + dy * dy;
-    const double hi = p.r_hi + o.r;
-    if (d2 >= hi * hi) {
-      return -1;
-    }
-    const double lo = p.r_lo + o.r;
-    if (lo > 0 && d2 < lo * lo) {
-      return p.r + o.r + margin_ - std::sqrt(d2);
-    }
-    return depth_exact(p, o);
-  }
-
-  // Out of line, so that the scan loops keep the disks they test in registers (see generate/paper_front.cpp).
-  [[gnu::noinline, gnu::cold]] double depth_exact(const Probe& p, const Node& o) {
-    ++stats_.exact_checks;
-    return disks_closer_than_exact({p.x, p.y}, p.r, {o.x, o.y}, o.r, margin_) ? 0x1p-1000 : -1;
-  }
+  [[nodiscard]] Probe probe(double x, double y, double r) const noexcept { return overlap_.probe(x, y, r); }
+  // How far the candidate comes into disk o (acceptance.hpp): > 0 if it overlaps.
+  double depth(const Probe& p, const Node& o) { return overlap_.depth(p, o); }
 
   // Squared distance from (x, y) to wall wl.
   static double distance2(const Wall& wl, double x, double y) noexcept {
@@ -834,7 +811,7 @@ class BoundaryFront {
     const auto home_col = static_cast<std::size_t>(probe_col(p.x));
     const auto home_row = static_cast<std::size_t>(probe_row(p.y));
     const std::size_t block = block_of(home_row, home_col);
-    const double reach = p.r + margin_;
+    const double reach = p.r + overlap_.margin();
     std::uint32_t first_wall = 0;
     std::uint32_t end_wall = 0;
     if ((walled_[block / 64] >> (block % 64) & 1) != 0) {
@@ -1486,7 +1463,7 @@ class BoundaryFront {
   RunControl control_;
   std::size_t out_before_;  // out_.size() until the run moves the nodes out (placed())
   RunFrame frame_;
-  double margin_ = 0, band_ = 0;
+  OverlapTest overlap_;
   RadiusClasses<kClasses> classes_;
   Box box_;              // the polygon's box (local coordinates) grown by the clearance
   double estimate_ = 0;  // of the disks the box takes (estimate_disks())
