@@ -279,28 +279,14 @@ class Front {
       return tangent_to_two(cn.x, cn.y, cn.r + gap, nn.x, nn.y, nn.r + gap, left, frame_.scale, px, py);
     }
     if (is_wall(c) && is_wall(n)) {
-      // A corner of two walls (Sec. 3: D1 in the corner of Bl and Bb).
-      const bool right = c == kRight || n == kRight;
-      px = right ? box_.xmax - gap : box_.xmin + gap;
-      py = box_.ymin + gap;
-      return true;
+      return tangent_to_two_walls(wall(c), wall(n), gap, px, py);  // Sec. 3: D1 in a corner
     }
-    // A disk and a wall: the centre lies on the wall's line moved in by r, at distance
-    // rd + r from the disk's centre; of the two such points, the one on the free side.
-    const std::int32_t d = is_wall(c) ? n : c;
-    const Wall wl = wall(is_wall(c) ? c : n);
-    const Node& dn = nodes_[static_cast<std::size_t>(d)];
-    const double a = dn.r + gap;
-    const double off = wl.nx * dn.x + wl.ny * dn.y - (wl.w + gap);  // signed distance to the line
-    const double s2 = a * a - off * off;
-    if (!(s2 >= 0)) {
-      return false;
-    }
-    // Along the wall (tx, ty) = rot90(inward normal); wall first: +, disk first: -.
-    const double s = is_wall(c) ? std::sqrt(s2) : -std::sqrt(s2);
-    px = dn.x - off * wl.nx + s * -wl.ny;
-    py = dn.y - off * wl.ny + s * wl.nx;
-    return true;
+    // A disk and a wall: along the wall (tx, ty) = rot90(inward normal); wall first: +, disk
+    // first: -.
+    const bool wall_first = is_wall(c);
+    const Wall wl = wall(wall_first ? c : n);
+    const Node& dn = nodes_[static_cast<std::size_t>(wall_first ? n : c)];
+    return tangent_to_disk_and_wall(dn.x, dn.y, dn.r, wl, -wl.ny, wl.nx, gap, wall_first, false, px, py);
   }
 
   // ------------------------------------------------------------------------------------------

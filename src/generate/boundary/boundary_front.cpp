@@ -653,36 +653,15 @@ class BoundaryFront {
       return tangent_to_two(an.x, an.y, an.r + g, bn.x, bn.y, bn.r + g, /*left=*/true, frame_.scale, px, py);
     }
     if (is_wall(a) && is_wall(b)) {
-      // Where the two walls' lines, moved in by g, cross.
-      const Wall& wa = walls_[wall_index(a)];
-      const Wall& wb = walls_[wall_index(b)];
-      const double det = wa.nx * wb.ny - wa.ny * wb.nx;
-      if (!(std::abs(det) > 1e-9)) {
-        return false;  // parallel
-      }
-      const double ca = wa.w + g;
-      const double cb = wb.w + g;
-      px = (ca * wb.ny - cb * wa.ny) / det;
-      py = (wa.nx * cb - wb.nx * ca) / det;
-      return std::isfinite(px) && std::isfinite(py);
+      return tangent_to_two_walls(walls_[wall_index(a)], walls_[wall_index(b)], g, px, py);
     }
-    // A wall and a node: on the wall's line moved in by g, at distance rn + g from the node;
-    // before the node along the wall if the wall comes first, after it otherwise.
+    // A wall and a node: before the node along the wall if the wall comes first, after it
+    // otherwise. A reflex vertex at the wall's end lies on its line.
     const bool wall_first = is_wall(a);
     const Wall& wl = walls_[wall_index(wall_first ? a : b)];
-    const Node& dn = nodes_[static_cast<std::size_t>(wall_first ? b : a)];
-    const double rd = dn.r + g;
-    const double off = wl.nx * dn.x + wl.ny * dn.y - (wl.w + g);
-    // A reflex vertex at the wall's end lies on its line: the disk touches the wall there, and
-    // s is 0 (computed, rounding made s2 negative about half the time, and the gap failed).
-    const double s2 = ends(wl, wall_first ? b : a) ? 0 : rd * rd - off * off;
-    if (!(s2 >= 0)) {
-      return false;
-    }
-    const double s = wall_first ? -std::sqrt(s2) : std::sqrt(s2);
-    px = dn.x - off * wl.nx + s * wl.tx;
-    py = dn.y - off * wl.ny + s * wl.ty;
-    return true;
+    const std::int32_t d = wall_first ? b : a;
+    const Node& dn = nodes_[static_cast<std::size_t>(d)];
+    return tangent_to_disk_and_wall(dn.x, dn.y, dn.r, wl, wl.tx, wl.ty, g, !wall_first, ends(wl, d), px, py);
   }
 
   // ------------------------------------------------------------------------------------------
