@@ -135,7 +135,7 @@ class Front {
         continue;
       }
       skips = 0;
-      if (vmask_ != 0 && try_voids(r)) {
+      if (!voids_.empty() && try_voids(r)) {
         area_ += r * r;
         r = draw();
         continue;
@@ -163,9 +163,7 @@ class Front {
     release(anext_);
     release(aprev_);
     release(head_);
-    for (auto& v : voids_) {
-      release(v);
-    }
+    voids_.release();
     move_out(nodes_, kFirstDisk, frame_.origin, frame_.unit.inv_k, out_);
     result.fixed_bytes = fixed_bytes_;
     return result;
@@ -655,23 +653,17 @@ class Front {
     if (k <= 0 || t == kNone || (Open && s == kRight)) {
       return;
     }
-    voids_[static_cast<std::size_t>(k)].push_back(VoidSeg{s, t});
-    vmask_ |= 1U << static_cast<unsigned>(k);
+    voids_.push(k, VoidSeg{s, t});
   }
 
   // Tries r in the voids; true if it was placed.
   bool try_voids(double r) {
     const int cls = void_class(r);
-    const std::uint32_t eligible = vmask_ & ~((2U << static_cast<unsigned>(cls)) - 1U);
-    if (eligible == 0) {
+    const int k = voids_.first_above(cls);
+    if (k < 0) {
       return false;
     }
-    const auto k = static_cast<std::size_t>(std::countr_zero(eligible));
-    const VoidSeg v = voids_[k].back();
-    voids_[k].pop_back();
-    if (voids_[k].empty()) {
-      vmask_ &= ~(1U << static_cast<unsigned>(k));
-    }
+    const VoidSeg v = voids_.pop(k);
     ++stats_.attempts;
     double px = 0;
     double py = 0;
@@ -684,8 +676,7 @@ class Front {
       return true;
     }
     if (cls > 0) {
-      voids_[static_cast<std::size_t>(cls)].push_back(v);
-      vmask_ |= 1U << static_cast<unsigned>(cls);
+      voids_.push(cls, v);
     }
     return false;
   }
@@ -764,8 +755,7 @@ class Front {
   };
   bool fill_voids_ = true;
   RadiusClasses<kVoidClasses> classes_;
-  std::array<std::vector<VoidSeg>, kVoidClasses> voids_;
-  std::uint32_t vmask_ = 0;  // bit k: voids_[k] is not empty
+  VoidBuckets<VoidSeg, kVoidClasses> voids_;
 };
 
 }  // namespace

@@ -10,6 +10,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <limits>
+#include <vector>
 
 namespace frontpack::detail {
 
@@ -89,6 +90,67 @@ class RadiusClasses {
   double rmin_ = std::numeric_limits<double>::infinity();
   std::uint64_t key0_ = 0;
   unsigned shift_ = 0;
+};
+
+/// The voids themselves, one bucket a radius class (RadiusClasses<N>), each a stack (the most
+/// recent void first: its neighbourhood is the likeliest still in the cache), with a bit a class
+/// saying whether its bucket holds any, so that the tightest class above a radius's is found
+/// with a count of trailing zeros a 64 classes. Class 0 holds nothing: its radii are too small
+/// for any disk drawn. Item is what a front keeps of a void (two or three element ids).
+template <class Item, int N>
+class VoidBuckets {
+  static_assert(N >= 2 && N <= 256);
+  static constexpr std::size_t kWords = (static_cast<std::size_t>(N) + 63) / 64;
+
+ public:
+  [[nodiscard]] bool empty() const noexcept {
+    return std::all_of(mask_.begin(), mask_.end(), [](std::uint64_t w) { return w == 0; });
+  }
+
+  /// Keeps `v` in class k (0 < k < N).
+  void push(int k, const Item& v) {
+    const auto i = static_cast<std::size_t>(k);
+    buckets_[i].push_back(v);
+    mask_[i / 64] |= std::uint64_t{1} << (i % 64);
+  }
+
+  /// The lowest class above cls whose bucket holds a void, or -1.
+  [[nodiscard]] int first_above(int cls) const noexcept {
+    const auto from = static_cast<std::size_t>(cls + 1);
+    for (std::size_t w = from / 64; w < kWords; ++w) {
+      std::uint64_t bits = mask_[w];
+      if (w == from / 64) {
+        bits &= ~std::uint64_t{0} << (from % 64);
+      }
+      if (bits != 0) {
+        return static_cast<int>(64 * w) + std::countr_zero(bits);
+      }
+    }
+    return -1;
+  }
+
+  /// Takes the most recent void of class k, whose bucket holds one (first_above()).
+  Item pop(int k) {
+    const auto i = static_cast<std::size_t>(k);
+    std::vector<Item>& bucket = buckets_[i];
+    const Item v = bucket.back();
+    bucket.pop_back();
+    if (bucket.empty()) {
+      mask_[i / 64] &= ~(std::uint64_t{1} << (i % 64));
+    }
+    return v;
+  }
+
+  /// Frees the buckets' memory (before the output grows).
+  void release() {
+    for (auto& bucket : buckets_) {
+      std::vector<Item>().swap(bucket);
+    }
+  }
+
+ private:
+  std::array<std::vector<Item>, static_cast<std::size_t>(N)> buckets_;
+  std::array<std::uint64_t, kWords> mask_{};  // bit k: buckets_[k] holds a void
 };
 
 }  // namespace frontpack::detail

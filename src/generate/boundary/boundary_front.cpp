@@ -38,7 +38,6 @@ constexpr std::int32_t kNone = std::numeric_limits<std::int32_t>::min();
 // to a void barely larger than it (at rmax / rmin = 10, 24 classes gave the comb an interior of
 // 0.836, 128 give 0.842); the cost per disk grows by about a tenth.
 constexpr int kClasses = 128;
-constexpr std::size_t kMaskWords = (kClasses + 63) / 64;  // words of a void mask (a bit per class)
 // Alternatives tried per gap (cases (b)-(d): the candidate moved to touch the element in its way
 // and one of its parents). None for a front gap or a void in the interior: there a move places
 // few of the disks it tries, and the radii it would have placed find the voids instead (moves
@@ -169,19 +168,14 @@ class BoundaryFront {
       Gap g{kNone, kNone};
       // Voids first, those on a rough wall before the others, the tightest class whose radii all
       // exceed r, the most recent void in it.
-      int k = any_rough_ ? first_void_above(1, cls) : -1;
+      int k = any_rough_ ? voids_[1].first_above(cls) : -1;
       std::size_t side = 1;
       if (k < 0) {
-        k = first_void_above(0, cls);
+        k = voids_[0].first_above(cls);
         side = 0;
       }
       if (k >= 0) {
-        std::vector<Gap>& bucket = voids_[side][static_cast<std::size_t>(k)];
-        g = bucket.back();
-        bucket.pop_back();
-        if (bucket.empty()) {
-          mask_[side][static_cast<std::size_t>(k) / 64] &= ~(std::uint64_t{1} << (static_cast<unsigned>(k) % 64));
-        }
+        g = voids_[side].pop(k);
       } else if (wall_head_ < wall_fifo_.size()) {
         g = wall_fifo_[wall_head_++];  // the first layer along every wall comes first
       } else if (!fifo_empty()) {
@@ -225,9 +219,7 @@ class BoundaryFront {
     release(fifo_);
     release(wall_fifo_);
     for (auto& side : voids_) {
-      for (auto& bucket : side) {
-        release(bucket);
-      }
+      side.release();
     }
     release(before_);
     release(head_cell_);
@@ -1154,23 +1146,8 @@ class BoundaryFront {
       // Voids on a rough wall are kept apart and tried first.
       const std::size_t side =
           (is_wall(g.a) && rough_[wall_index(g.a)] != 0) || (is_wall(g.b) && rough_[wall_index(g.b)] != 0) ? 1 : 0;
-      voids_[side][static_cast<std::size_t>(k)].push_back(g);
-      mask_[side][static_cast<std::size_t>(k) / 64] |= std::uint64_t{1} << (static_cast<unsigned>(k) % 64);
+      voids_[side].push(k, g);
     }
-  }
-
-  // The lowest class above cls with a void on side s (1: rough walls), or -1.
-  [[nodiscard]] int first_void_above(std::size_t s, int cls) const noexcept {
-    for (auto w = static_cast<std::size_t>(cls + 1) / 64; w < kMaskWords; ++w) {
-      std::uint64_t bits = mask_[s][w];
-      if (w == static_cast<std::size_t>(cls + 1) / 64) {
-        bits &= ~std::uint64_t{0} << (static_cast<unsigned>(cls + 1) % 64);
-      }
-      if (bits != 0) {
-        return static_cast<int>(64 * w) + std::countr_zero(bits);
-      }
-    }
-    return -1;
   }
 
   // ------------------------------------------------------------------------------------------
@@ -1464,8 +1441,7 @@ class BoundaryFront {
   std::vector<Gap> wall_fifo_;  // gaps on a wall or a reflex vertex (grows with the perimeter only)
   std::size_t wall_head_ = 0;
   std::size_t head_ = 0;
-  std::array<std::array<std::vector<Gap>, kClasses>, 2> voids_;  // [1]: on a rough wall; [.][k]: class k
-  std::array<std::array<std::uint64_t, kMaskWords>, 2> mask_{};  // bit k of mask_[s]: voids_[s][k] not empty
+  std::array<VoidBuckets<Gap, kClasses>, 2> voids_;  // [1]: on a rough wall
 
   CellGrid grid_;
   bool probes_inside_ = false;  // probe_col(), probe_row(): no clamping needed
