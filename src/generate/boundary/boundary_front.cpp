@@ -8,6 +8,9 @@
 // docs/boundary-method.md. Its density: docs/density.md; its cost: docs/performance.md.
 #include "generate/boundary/boundary_front.hpp"
 
+#include "generate/boundary/wall_index.hpp"
+#include "generate/boundary/walls.hpp"
+
 #include <algorithm>
 #include <array>
 #include <bit>
@@ -33,7 +36,7 @@ namespace frontpack::detail {
 
 namespace {
 
-constexpr std::int32_t kNone = std::numeric_limits<std::int32_t>::min();
+constexpr std::int32_t kNone = kNoElement;
 // Void buckets: log-spaced radius classes between rmin and rmax. Finer classes match each radius
 // to a void barely larger than it (at rmax / rmin = 10, 24 classes gave the comb an interior of
 // 0.836, 128 give 0.842); the cost per disk grows by about a tenth.
@@ -52,14 +55,7 @@ constexpr int kMoves = 0;
 constexpr int kWallCut = 1;
 constexpr int kWallMoves = 3;
 constexpr int kVoidMoves = 3;
-constexpr std::size_t kBlock = 16;  // cells per side of a block in the walled_ bitmap
-constexpr std::size_t kBlockCells = kBlock * kBlock;
 constexpr std::uint32_t kWallList = 16;  // a cell with more walls than this asks the wall tree
-constexpr std::size_t kLeafWalls = 4;    // walls per leaf of the wall tree
-// kSlideTurn, 0.35 rad (20 degrees): a vertex where the boundary turns by less is no corner: the
-// front does not start there, and the wall layer slides across it (slide()). Used through its
-// cosine only, correctly rounded here (no C library call).
-constexpr double kCosSlideTurn = 0.9393727128473789;  // cos(0.35)
 
 // Lanes. pocket() computes one pocket in a double; a disk placed in a void needs two, which
 // pocket_pair() computes in the two lanes of a vector (GCC's and Clang's vector extensions, whose
@@ -104,15 +100,6 @@ class BoundaryFront {
     std::int32_t cell_next;
     std::int32_t after;  // the second element of the last front gap with this disk first (overtaker())
   };
-  struct Wall {
-    double ax, ay, bx, by;  // a -> b, the domain on the left
-    double tx, ty;          // unit direction
-    double nx, ny;          // unit inward normal
-    double len, w;          // length; n . a
-  };
-  struct Corner {  // a reflex vertex: the directions of its edges in and out
-    double ux1, uy1, ux2, uy2;
-  };
   struct Gap {
     std::int32_t a, b;
     // A void's third element, the one that bounds it (keep_void()): a disk that a and b touch
@@ -142,7 +129,6 @@ class BoundaryFront {
     before_.reserve(reserve);
     setup_walls();
     setup_grid();
-    build_wall_tree();
     for (const Wall& w : walls_) {
       polygon_area_ += (w.ax * w.by - w.bx * w.ay) / 2;  // holes (clockwise) subtract
     }
@@ -223,10 +209,7 @@ class BoundaryFront {
     }
     release(before_);
     release(head_cell_);
-    release(block_first_);
-    release(cell_walls_);
-    release(wall_ids_);
-    release(walled_);
+    index_.release();
     move_out(nodes_, corners_.size(), frame_.origin, frame_.unit.inv_k, out_);
     result.fixed_bytes = fixed_bytes_;
     return result;
@@ -279,7 +262,6 @@ class BoundaryFront {
     }
   }
   [[nodiscard]] static bool is_wall(std::int32_t e) noexcept { return e < 0; }
-  [[nodiscard]] static std::size_t wall_index(std::int32_t e) noexcept { return static_cast<std::size_t>(-(e + 1)); }
   // Against a copy of corners_.size() (the vector's size is a subtraction and a shift; with it,
   // these tests were 7% of the front's instructions on a 67k-disk square, under callgrind).
   [[nodiscard]] bool is_disk(std::int32_t e) const noexcept { return e >= corner_count_; }
@@ -292,21 +274,6 @@ class BoundaryFront {
   // ------------------------------------------------------------------------------------------
   // Walls, reflex vertices and the initial gaps.
 
-  // |(dx, dy)| from + - * / and a square root alone, all correctly rounded on every platform:
-  // std::hypot's last bit differs between C libraries, and every tangent to the wall, so every
-  // packing, would differ with it. At a power-of-two scale (exact), so that the squares neither
-  // overflow nor underflow.
-  static double length(double dx, double dy) noexcept {
-    const double m = std::max(std::abs(dx), std::abs(dy));
-    if (!(m > 0) || !std::isfinite(m)) {
-      return m;  // 0 where two vertices round to one local point (the wall then tests as nothing)
-    }
-    const int e = std::ilogb(m);
-    const double x = std::ldexp(dx, -e);
-    const double y = std::ldexp(dy, -e);
-    return std::ldexp(std::sqrt(x * x + y * y), e);
-  }
-
   void setup_walls() {
     auto add_ring = [&](const Ring& ring) {
       const std::size_t n = ring.size();
@@ -314,12 +281,7 @@ class BoundaryFront {
       for (std::size_t i = 0; i < n; ++i) {
         const Point a = local(ring[i]);
         const Point b = local(ring[(i + 1) % n]);
-        const double dx = b.x - a.x;
-        const double dy = b.y - a.y;
-        const double len = length(dx, dy);
-        Wall w{a.x, a.y, b.x, b.y, dx / len, dy / len, -dy / len, dx / len, len, 0};
-        w.w = w.nx * a.x + w.ny * a.y;
-        walls_.push_back(w);
+        walls_.push_back(make_wall(a.x, a.y, b.x, b.y));
       }
       // Corner at vertex i + 1, between wall i (in) and wall i + 1 (out). The front starts at
       // every corner sharper than kSlideTurn; along gentler ones the wall layer slides from one
@@ -402,15 +364,9 @@ class BoundaryFront {
     // (the grouped copy and the lists kept) with 1,028 bytes a walled block; then
     // peak_bytes_per_disk per disk. On a sliver 1e-7 high these lists, sized by the grid's cells
     // and not by the disks, were most of the run's memory (565 MB for 1.1M disks).
-    const std::size_t blocks = ((grid_.nx + kBlock - 1) / kBlock) * ((grid_.ny + kBlock - 1) / kBlock);
-    std::size_t need = grid_.cells() * sizeof(std::int32_t) + blocks * (sizeof(std::size_t) + sizeof(std::uint32_t));
-    const auto over_limit = [&](std::size_t bytes, const std::string& what) {
-      if (req_.memory_limit != 0 && bytes >= req_.memory_limit) {
-        throw_memory_limit(req_.memory_limit, what + " (" + std::to_string(bytes) + " bytes)",
-                           count_of(estimate_, 1e18));
-      }
-    };
-    over_limit(need, "the grid over the polygon's box has " + std::to_string(grid_.cells()) + " cells");
+    const SetupBudget budget{req_.memory_limit, estimate_};
+    const std::size_t need = grid_.cells() * sizeof(std::int32_t) + WallIndex::block_bytes(grid_);
+    budget.check(need, "the grid over the polygon's box has " + std::to_string(grid_.cells()) + " cells");
     head_cell_.assign(grid_.cells(), kNone);
 
     // The reflex vertices are nodes (elements a disk can touch) but stay out of the cells: as
@@ -428,183 +384,15 @@ class BoundaryFront {
       before_.push_back(kNone);
     }
 
-    // Walls per cell: those meeting the cell grown by rmax + the clearance, kept for the cells of
-    // walled blocks only (below). Found as (cell, wall) pairs, row by row along each wall: in a
-    // row, only the columns that the wall's stretch in the row's band can reach are tested, so
-    // that the work follows the walls' length and not the area of their boxes (a diagonal wall's
-    // box is a quarter of the grid: testing every cell of it took 49 ms, 14% of the front, on a
-    // 1M-disk diamond), and nothing is kept per cell of the grid.
+    // Walls per cell: those meeting the cell grown by rmax + the clearance (wall_index.cpp).
     const double reach = (frame_.rmax + frame_.clearance) * (1 + 1e-9) + 4 * frame_.clearance;
-    struct Pair {
-      // The cell's block, then its place in the block (the lists' order): below
-      // (nx + kBlock - 1) (ny + kBlock - 1), which CellGrid's cap of about 16M cells keeps far
-      // below 2^32.
-      std::uint32_t key;
-      std::uint32_t wall;
-    };
-    std::vector<Pair> pairs;
-    blocks_x_ = (grid_.nx + kBlock - 1) / kBlock;  // for block_of()
-    for (std::size_t e = 0; e < walls_.size(); ++e) {
-      const Wall& wl = walls_[e];
-      const double dx = wl.bx - wl.ax;
-      const double dy = wl.by - wl.ay;
-      const std::int64_t c0 = col(std::min(wl.ax, wl.bx) - reach);
-      const std::int64_t c1 = col(std::max(wl.ax, wl.bx) + reach);
-      const std::int64_t r0 = row(std::min(wl.ay, wl.by) - reach);
-      const std::int64_t r1 = row(std::max(wl.ay, wl.by) + reach);
-      for (std::int64_t j = r0; j <= r1; ++j) {
-        const double y0 = grid_.y0 + static_cast<double>(j) * grid_.side - reach;
-        // The wall's x-extent in the row's band, grown by a cell on each side (far more than
-        // rounding needs: the exact test below decides every cell; this only skips those that
-        // cannot pass it).
-        double t0 = 0;
-        double t1 = 1;
-        if (dy != 0) {
-          const double ta = (y0 - grid_.side - wl.ay) / dy;
-          const double tb = (y0 + 2 * grid_.side + 2 * reach - wl.ay) / dy;
-          t0 = std::max(t0, std::min(ta, tb));
-          t1 = std::min(t1, std::max(ta, tb));
-          if (!(t0 <= t1)) {
-            continue;
-          }
-        }
-        const double xa = wl.ax + t0 * dx;
-        const double xb = wl.ax + t1 * dx;
-        const std::int64_t i0 = std::max(c0, col(std::min(xa, xb) - reach) - 1);
-        const std::int64_t i1 = std::min(c1, col(std::max(xa, xb) + reach) + 1);
-        for (std::int64_t i = i0; i <= i1; ++i) {
-          const double x0 = grid_.x0 + static_cast<double>(i) * grid_.side - reach;
-          if (!segment_meets_box(wl, x0, y0, x0 + grid_.side + 2 * reach, y0 + grid_.side + 2 * reach)) {
-            continue;
-          }
-          const auto ui = static_cast<std::size_t>(i);
-          const auto uj = static_cast<std::size_t>(j);
-          pairs.push_back(Pair{static_cast<std::uint32_t>(block_of(uj, ui) * kBlockCells + place_in_block(uj, ui)),
-                               static_cast<std::uint32_t>(e)});
-        }
-        if (req_.memory_limit != 0 && need + 16 * pairs.size() >= req_.memory_limit) {  // a row at a time
-          over_limit(need + 16 * pairs.size(), "the domain's edges come within reach of " + std::to_string(pairs.size()) +
-                                                   "+ cells of its grid, counted with multiplicity");
-        }
-      }
-    }
-    // A bit per block of kBlock x kBlock cells: whether any of them has walls. Most probes lie in
-    // blocks without, and the bits of a whole front fit in the first-level cache, unlike the
-    // cells' lists (a tenth of the front's cache misses were reading them).
-    // (blocks: blocks_x_ * the blocks per column, counted above.)
-    walled_.assign((blocks + 63) / 64, 0);
-    // The pairs grouped by block (a counting sort: stable, so each block's pairs stay in the order
-    // of the walls).
-    std::vector<std::size_t> start(blocks + 1, 0);
-    for (const Pair& q : pairs) {
-      const std::size_t b = q.key / kBlockCells;
-      ++start[b + 1];
-      walled_[b / 64] |= std::uint64_t{1} << (b % 64);
-    }
-    std::partial_sum(start.begin(), start.end(), start.begin());
-    if (pairs.size() > std::numeric_limits<std::uint32_t>::max()) {  // the lists index them in 32 bits
-      throw LimitError("the domain's edges come within reach of " + std::to_string(pairs.size()) +
-                           " cells of the packing's grid, counted with multiplicity, more than 2^32; use larger "
-                           "radii or a domain with fewer edges",
-                       static_cast<std::size_t>(std::min(estimate_, 1e18)));
-    }
-    std::vector<Pair> grouped(pairs.size());
-    {
-      std::vector<std::size_t> at(start.begin(), start.end() - 1);
-      for (const Pair& q : pairs) {
-        grouped[at[q.key / kBlockCells]++] = q;
-      }
-    }
-    release(pairs);
-    // The lists of the walled blocks' cells, block by block: a block's cells' lists one after the
-    // other in wall_ids_, and kBlockCells + 1 entries in cell_walls_ from block_first_[b], so that a
-    // cell's list runs from its entry to the next. Each block's pairs are put in place by cell
-    // with a second counting sort, which keeps a cell's walls in the order of the walls (as when
-    // every cell was tested in turn). (Begins for every cell of the grid were 4 bytes per cell, 4
-    // per disk at cells of rmax, most of them for cells no wall comes near.)
-    block_first_.assign(blocks, 0);
-    std::size_t walled_blocks = 0;
-    for (const std::uint64_t bits : walled_) {
-      walled_blocks += static_cast<std::size_t>(std::popcount(bits));
-    }
-    over_limit(need + 12 * grouped.size() + walled_blocks * (kBlockCells + 1) * sizeof(std::uint32_t),
-               "the domain's edges come near " + std::to_string(walled_blocks) + " blocks of " +
-                   std::to_string(kBlockCells) + " cells of its grid, with " + std::to_string(grouped.size()) +
-                   " (cell, wall) pairs");
-    cell_walls_.reserve(walled_blocks * (kBlockCells + 1));
-    wall_ids_.resize(grouped.size());
-    std::array<std::uint32_t, kBlockCells + 1> at{};
-    for (std::size_t b = 0; b < blocks; ++b) {
-      if (start[b] == start[b + 1]) {
-        continue;
-      }
-      block_first_[b] = static_cast<std::uint32_t>(cell_walls_.size());
-      at.fill(0);
-      for (std::size_t k = start[b]; k < start[b + 1]; ++k) {
-        ++at[grouped[k].key % kBlockCells + 1];
-      }
-      for (std::size_t l = 0; l < kBlockCells; ++l) {
-        at[l + 1] += at[l];
-      }
-      const auto base = static_cast<std::uint32_t>(start[b]);
-      for (const std::uint32_t first : at) {
-        cell_walls_.push_back(base + first);
-      }
-      for (std::size_t k = start[b]; k < start[b + 1]; ++k) {
-        wall_ids_[base + at[grouped[k].key % kBlockCells]++] = -(static_cast<std::int32_t>(grouped[k].wall) + 1);
-      }
-    }
+    index_.build(walls_, grid_, reach, need, budget);
     // What stays for the run; the disks have the rest of the limit.
-    fixed_bytes_ = (head_cell_.size() + wall_ids_.size() + cell_walls_.size() + block_first_.size()) *
-                       sizeof(std::uint32_t) +
-                   walled_.size() * sizeof(std::uint64_t);
+    fixed_bytes_ = head_cell_.size() * sizeof(std::uint32_t) + index_.bytes();
     if (req_.memory_limit != 0) {
-      over_limit(fixed_bytes_, "the grid and the lists of the walls near its cells");
+      budget.check(fixed_bytes_, "the grid and the lists of the walls near its cells");
       control_.limit_memory(req_.memory_limit - fixed_bytes_);
     }
-  }
-
-  // The range of cell (row, col)'s walls in wall_ids_; only for a cell in a walled block.
-  [[nodiscard]] std::pair<std::uint32_t, std::uint32_t> cell_walls(std::size_t row, std::size_t col) const noexcept {
-    const std::uint32_t* at = cell_walls_.data() + block_first_[block_of(row, col)] + place_in_block(row, col);
-    return {at[0], at[1]};
-  }
-
-  [[nodiscard]] std::size_t block_of(std::size_t row, std::size_t col) const noexcept {
-    return row / kBlock * blocks_x_ + col / kBlock;
-  }
-  // Cell (row, col)'s place in its block, the order of the block's lists.
-  [[nodiscard]] static std::size_t place_in_block(std::size_t row, std::size_t col) noexcept {
-    return row % kBlock * kBlock + col % kBlock;
-  }
-
-  // Whether segment wl meets the box [x0, x1] x [y0, y1] (Liang-Barsky clipping; conservative
-  // enough: the box is already grown by the reach).
-  static bool segment_meets_box(const Wall& wl, double x0, double y0, double x1, double y1) noexcept {
-    double t0 = 0;
-    double t1 = 1;
-    const double dx = wl.bx - wl.ax;
-    const double dy = wl.by - wl.ay;
-    const std::array<double, 4> p{-dx, dx, -dy, dy};
-    const std::array<double, 4> q{wl.ax - x0, x1 - wl.ax, wl.ay - y0, y1 - wl.ay};
-    for (std::size_t k = 0; k < 4; ++k) {
-      if (p[k] == 0) {
-        if (q[k] < 0) {
-          return false;
-        }
-        continue;
-      }
-      const double t = q[k] / p[k];
-      if (p[k] < 0) {
-        t0 = std::max(t0, t);
-      } else {
-        t1 = std::min(t1, t);
-      }
-      if (t0 > t1) {
-        return false;
-      }
-    }
-    return true;
   }
 
   [[nodiscard]] std::int64_t col(double x) const noexcept { return grid_.col(x); }
@@ -657,114 +445,11 @@ class BoundaryFront {
   }
 
   // ------------------------------------------------------------------------------------------
-  // The walls in a bounding-box tree, for cells whose list is long (a ring of 100,000 short edges
-  // puts hundreds of walls within rmax of every cell along it; scanning them all made such rings
-  // cost hundreds of microseconds per disk). The tree is implicit over the walls in their order,
-  // which follows the rings, so consecutive walls are neighbours and a node's box stays small:
-  // leaves of kLeafWalls walls, node k's children 2k and 2k + 1, leaves from index leaves_. Built
-  // once; queries allocate nothing. (Boost.Geometry's rtree allocates in its nearest query, and
-  // CGAL 5.5's AABB tree is three-dimensional only.)
-
-  struct Bounds {
-    double xmin, ymin, xmax, ymax;
-  };
-
-  void build_wall_tree() {
-    const std::size_t n = walls_.size();
-    const std::size_t leaves = (n + kLeafWalls - 1) / kLeafWalls;
-    leaves_ = std::bit_ceil(std::max<std::size_t>(leaves, 1));
-    const double inf = std::numeric_limits<double>::infinity();
-    tree_.assign(2 * leaves_, Bounds{inf, inf, -inf, -inf});
-    for (std::size_t e = 0; e < n; ++e) {
-      Bounds& b = tree_[leaves_ + e / kLeafWalls];
-      const Wall& wl = walls_[e];
-      b.xmin = std::min({b.xmin, wl.ax, wl.bx});
-      b.ymin = std::min({b.ymin, wl.ay, wl.by});
-      b.xmax = std::max({b.xmax, wl.ax, wl.bx});
-      b.ymax = std::max({b.ymax, wl.ay, wl.by});
-    }
-    for (std::size_t k = leaves_ - 1; k >= 1; --k) {
-      const Bounds& l = tree_[2 * k];
-      const Bounds& r = tree_[2 * k + 1];
-      tree_[k] = Bounds{std::min(l.xmin, r.xmin), std::min(l.ymin, r.ymin), std::max(l.xmax, r.xmax),
-                        std::max(l.ymax, r.ymax)};
-    }
-  }
-
-  // Squared distance from (x, y) to box b (0 inside; infinite for an empty box).
-  static double distance2(const Bounds& b, double x, double y) noexcept {
-    const double dx = std::max(std::max(b.xmin - x, 0.0), x - b.xmax);
-    const double dy = std::max(std::max(b.ymin - y, 0.0), y - b.ymax);
-    return dx * dx + dy * dy;
-  }
-
-  // The wall nearest to (x, y) at a squared distance below d2 (on return, its squared distance),
-  // or kNone. Of walls at the same distance, the first in order, as the cell lists have them.
-  // A caller that knows a wall `best` at squared distance d2 passes it: the search then prunes
-  // everything farther from the start, and returns `best` if no wall is nearer (or as near and
-  // before it in order).
-  std::int32_t nearest_wall(double x, double y, double& d2, std::int32_t best = kNone) const noexcept {
-    // Depth <= 64: at most one deferred sibling per level. Each entry carries its box's squared
-    // distance, computed once when it was pushed. Not zeroed: only what was pushed is read, and
-    // zeroing the stack was 4% of the instructions on a 12,000-edge ring.
-    struct Entry {
-      std::size_t node;
-      double d2;
-    };
-    std::array<Entry, 128> stack;  // NOLINT(cppcoreguidelines-pro-type-member-init)
-    std::size_t top = 0;
-    stack[top++] = Entry{1, distance2(tree_[1], x, y)};
-    while (top > 0) {
-      const auto [k, box_d2] = stack[--top];
-      if (!(box_d2 <= d2)) {
-        continue;
-      }
-      if (k >= leaves_) {
-        const std::size_t first = (k - leaves_) * kLeafWalls;
-        const std::size_t last = std::min(first + kLeafWalls, walls_.size());
-        for (std::size_t e = first; e < last; ++e) {
-          const double w2 = distance2(walls_[e], x, y);
-          const auto id = -(static_cast<std::int32_t>(e) + 1);
-          if (w2 < d2 || (w2 == d2 && best != kNone && id > best)) {
-            d2 = w2;
-            best = id;
-          }
-        }
-        continue;
-      }
-      // The nearer child on top, so that it is searched first and prunes the other.
-      const Entry left{2 * k, distance2(tree_[2 * k], x, y)};
-      const Entry right{2 * k + 1, distance2(tree_[2 * k + 1], x, y)};
-      const bool left_first = left.d2 <= right.d2;
-      stack[top++] = left_first ? right : left;
-      stack[top++] = left_first ? left : right;
-    }
-    return best;
-  }
-
-  // ------------------------------------------------------------------------------------------
   // Overlap tests.
 
   [[nodiscard]] Probe probe(double x, double y, double r) const noexcept { return overlap_.probe(x, y, r); }
   // How far the candidate comes into disk o (acceptance.hpp): > 0 if it overlaps.
   double depth(const Probe& p, const Node& o) { return overlap_.depth(p, o); }
-
-  // Squared distance from (x, y) to wall wl.
-  static double distance2(const Wall& wl, double x, double y) noexcept {
-    const double u = (x - wl.ax) * wl.tx + (y - wl.ay) * wl.ty;
-    double qx = wl.ax;
-    double qy = wl.ay;
-    if (u >= wl.len) {
-      qx = wl.bx;
-      qy = wl.by;
-    } else if (u > 0) {
-      qx += u * wl.tx;
-      qy += u * wl.ty;
-    }
-    const double dx = x - qx;
-    const double dy = y - qy;
-    return dx * dx + dy * dy;
-  }
 
   // The element the candidate overlaps most deeply (a disk or a wall; a reflex vertex is no
   // deeper than the walls that end there, up to rounding: setup_grid()), or kNone.
@@ -781,19 +466,14 @@ class BoundaryFront {
     double best_depth = 0;
     const auto home_col = static_cast<std::size_t>(probe_col(p.x));
     const auto home_row = static_cast<std::size_t>(probe_row(p.y));
-    const std::size_t block = block_of(home_row, home_col);
     const double reach = p.r + overlap_.margin();
-    std::uint32_t first_wall = 0;
-    std::uint32_t end_wall = 0;
-    if ((walled_[block / 64] >> (block % 64) & 1) != 0) {
-      std::tie(first_wall, end_wall) = cell_walls(home_row, home_col);
-    }
+    const auto [first_wall, end_wall] = index_.near_cell(home_row, home_col);
     if (end_wall == first_wall) {
       // No walls within reach.
     } else if (end_wall - first_wall > kWallList) {
       // A finely divided boundary: the nearest wall, from the tree, is the deepest one.
       double d2 = reach * reach;
-      const std::int32_t e = nearest_wall(p.x, p.y, d2);
+      const std::int32_t e = index_.nearest(p.x, p.y, d2);
       if (e != kNone) {
         if constexpr (Any) {
           return e;
@@ -803,7 +483,7 @@ class BoundaryFront {
       }
     } else {
       for (std::uint32_t k = first_wall; k < end_wall; ++k) {
-        const std::int32_t e = wall_ids_[k];
+        const std::int32_t e = index_.id(k);
         const Wall& wl = walls_[wall_index(e)];
         const double d2 = distance2(wl, p.x, p.y);
         if (d2 < reach * reach) {
@@ -1168,7 +848,7 @@ class BoundaryFront {
       const double sx = frame_.width * rng_.uniform();
       const double sy = frame_.height * rng_.uniform();
       const double tx = sx + r + r2 + frame_.clearance;
-      if (!inside_polygon(sx, sy) || !fits(sx, sy, r) || !fits(tx, sy, r2)) {
+      if (!index_.inside(sx, sy) || !fits(sx, sy, r) || !fits(tx, sy, r2)) {
         continue;
       }
       // The pair apart by the clearance, as tangent disks are (this cannot fail; checked before
@@ -1193,38 +873,6 @@ class BoundaryFront {
       return false;
     }
     return deepest<true>(probe(x, y, r)) == kNone;
-  }
-
-  // Crossing number (floating point: the points asked about are seed centres and candidates that
-  // touch only walls, at least their radius from every wall).
-  [[nodiscard]] bool inside_polygon(double x, double y) const noexcept {
-    // The walls whose boxes meet the ray from (x, y) to the right, from the wall tree.
-    bool in = false;
-    std::array<std::size_t, 128> stack;  // NOLINT(cppcoreguidelines-pro-type-member-init): see nearest_wall()
-    std::size_t top = 0;
-    stack[top++] = 1;
-    while (top > 0) {
-      const std::size_t k = stack[--top];
-      const Bounds& b = tree_[k];
-      if (!(b.ymin <= y && y <= b.ymax && x <= b.xmax)) {
-        continue;
-      }
-      if (k < leaves_) {
-        stack[top++] = 2 * k;
-        stack[top++] = 2 * k + 1;
-        continue;
-      }
-      const std::size_t first = (k - leaves_) * kLeafWalls;
-      const std::size_t last = std::min(first + kLeafWalls, walls_.size());
-      for (std::size_t e = first; e < last; ++e) {
-        const Wall& w = walls_[e];
-        if ((w.ay > y) != (w.by > y)) {
-          const double xc = w.ax + (y - w.ay) * (w.bx - w.ax) / (w.by - w.ay);
-          in = in != (x < xc);
-        }
-      }
-    }
-    return in;
   }
 
   // ------------------------------------------------------------------------------------------
@@ -1253,7 +901,7 @@ class BoundaryFront {
         return;
       }
       double d2 = distance2(walls_[wall_index(w)], px, py);
-      const std::int32_t e = nearest_wall(px, py, d2, w);
+      const std::int32_t e = index_.nearest(px, py, d2, w);
       if (e == kNone || e == w || ring_of(e) != ring_of(w)) {
         return;
       }
@@ -1324,7 +972,7 @@ class BoundaryFront {
         // segment between their centres. Touching only walls and reflex vertices, it can lie
         // wholly outside where the domain is thinner than the clearance (a spike two edges a few
         // ulps apart): its centre must then be inside.
-        if (!is_disk(x) && !is_disk(y) && !inside_polygon(px, py)) {
+        if (!is_disk(x) && !is_disk(y) && !index_.inside(px, py)) {
           return false;
         }
         const std::int32_t n = add_node(px, py, r);
@@ -1446,16 +1094,10 @@ class BoundaryFront {
   CellGrid grid_;
   bool probes_inside_ = false;  // probe_col(), probe_row(): no clamping needed
   HugeVector<std::int32_t> head_cell_;
-  std::vector<std::uint32_t> block_first_;  // per block of cells: its first entry in cell_walls_
-  std::vector<std::uint32_t> cell_walls_;   // per cell of a walled block: its first wall in wall_ids_
-  std::vector<std::int32_t> wall_ids_;
-  std::vector<std::uint64_t> walled_;  // a bit per block of cells: any walls (setup_grid())
-  std::size_t blocks_x_ = 1;
-  std::vector<Bounds> tree_;             // the wall tree (build_wall_tree)
+  WallIndex index_;
   std::vector<std::size_t> ring_first_;  // the first wall of each ring
   std::vector<std::uint8_t> rough_;
   bool any_rough_ = false;  // a rough wall exists (else no void is kept on side 1)
-  std::size_t leaves_ = 1;
 };
 
 }  // namespace
