@@ -15,6 +15,8 @@
 #include "certify/certify.hpp"
 #include "common/format.hpp"
 #include "generate/paper_front.hpp"
+#include "generate/run_control.hpp"
+#include "generate/settings.hpp"
 #include "frontpack/fill.hpp"
 #include "common/rng.hpp"
 #include "common/stop.hpp"
@@ -138,8 +140,7 @@ Packing run_fill(const Domain& domain, const FillOptions& options,
   }
   double covered_before = 0;  // by the disks of the polygons done
   for (std::size_t p = 0; p < domain.num_polygons() && !packing.truncated && !packing.cancelled; ++p) {
-    detail::FrontRequest req;
-    req.box = domain.bbox(p);
+    detail::FrontSettings req;
     req.method = options.method;
     req.radii = &radii;
     req.window = options.window;
@@ -167,17 +168,9 @@ Packing run_fill(const Domain& domain, const FillOptions& options,
     }
     detail::FrontResult result;
     if (options.method == Method::boundary) {
-      detail::BoundaryRequest breq;
-      breq.polygon = &domain.polygons()[p];
-      breq.radii = &radii;
-      breq.clearance = clearance;
-      breq.max_disks = options.max_disks;
-      breq.memory_limit = memory_bytes;
-      breq.fill_voids = options.fill_voids;
-      breq.tick = req.tick;
-      result = detail::advance_boundary(breq, rng, raw, packing.stats);
+      result = detail::advance_boundary(req, domain.polygons()[p], rng, raw, packing.stats);
     } else {
-      result = detail::advance_front(req, rng, raw, packing.stats);
+      result = detail::advance_front(req, domain.bbox(p), rng, raw, packing.stats);
     }
     if (result.over_memory) {
       detail::throw_memory_limit(memory_bytes,

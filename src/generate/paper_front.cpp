@@ -23,47 +23,14 @@
 #include <limits>
 #include <numbers>
 
-#include "generate/cell_grid.hpp"
 #include "common/huge_pages.hpp"
-#include "exact/overlap.hpp"
+#include "generate/acceptance.hpp"
+#include "generate/disk_grid.hpp"
+#include "generate/scale.hpp"
+#include "generate/tangency.hpp"
+#include "generate/void_buckets.hpp"
 
 namespace frontpack::detail {
-
-double estimate_disks(const Box& box, const RadiusDistribution& radii) {
-  // A random dense packing covers about 0.82 of the area (paper, Sec. 4; our measurements).
-  const double mean_square = radii.mean_square();
-  const double estimate = 0.85 * box.width() * box.height() / (std::numbers::pi * mean_square);
-  if (mean_square >= std::numeric_limits<double>::min() && !std::isnan(estimate)) {
-    return estimate;  // E[r^2] normal: the figure is accurate (or 0, or saturated to infinity)
-  }
-  // E[r^2] underflows (radii below about 1e-154; 0 / 0 for a box as small) or is not a number:
-  // the same figure at the scale of rmax (a power of two: exact), with E[(k r)^2] from the
-  // quantiles at 1024 midpoints, since mean_square() has lost it.
-  const LengthScale scale(radii.max());
-  double sum = 0;
-  constexpr int kPoints = 1024;
-  for (int i = 0; i < kPoints; ++i) {
-    const double r = scale.k * radii.quantile((i + 0.5) / kPoints);
-    sum += r * r;
-  }
-  const double scaled_mean_square = sum / kPoints;
-  if (!(scaled_mean_square > 0)) {
-    return std::numeric_limits<double>::infinity();  // radii too small to square even at their scale
-  }
-  const double scaled = 0.85 * (box.width() * scale.k) * (box.height() * scale.k) / (std::numbers::pi * scaled_mean_square);
-  return std::isnan(scaled) ? std::numeric_limits<double>::infinity() : scaled;
-}
-
-double bound_disks(const Box& box, double grow, const RadiusDistribution& radii) {
-  const Box grown{box.xmin - grow, box.ymin - grow, box.xmax + grow, box.ymax + grow};
-  return estimate_disks(grown, radii) / 0.85;
-}
-
-void throw_memory_limit(std::size_t limit, const std::string& what, std::size_t estimate) {
-  throw LimitError("the run would need more than the memory limit of " + std::to_string(limit) + " bytes: " + what +
-                       "; raise memory_limit (frontpack fill --memory-limit) or use larger radii",
-                   estimate);
-}
 
 namespace {
 
@@ -89,48 +56,44 @@ class Front {
   static_assert(sizeof(Node) == 32);
 
  public:
-  Front(const FrontRequest& req, Rng& rng, std::vector<Disk>& out, FillStats& stats)
-      : req_(req), rng_(rng), out_(out), stats_(stats), control_(req.max_disks, req.tick) {
-    // Work in coordinates local to the box's lower-left corner, so that a translated domain
-    // gives the same computation (and small numbers for domains far from the origin).
-    // And in the unit of WorkScale (1 but for rmax outside [2^-300, 2^300]).
-    unit_ = WorkScale(req.radii->max());
-    origin_ = Point{req.box.xmin, req.box.ymin};
-    box_ = Box{0, 0, (req.box.xmax - origin_.x) * unit_.k, (req.box.ymax - origin_.y) * unit_.k};
-    rmax_ = req.radii->max() * unit_.k;
-    clearance_ = req.clearance * unit_.k;
-    scale_ = LengthScale(rmax_);
-    margin_ = clearance_ / 2;
-    band_ = clearance_ / 4;
+  Front(const FrontSettings& req, const Box& region, Rng& rng, std::vector<Disk>& out, FillStats& stats)
+      : req_(req),
+        rng_(rng),
+        out_(out),
+        stats_(stats),
+        frame_(*req.radii, req.clearance, region),
+        overlap_(frame_.clearance, stats),
+        control_(req.max_disks, req.tick) {
+    box_ = Box{0, 0, frame_.width, frame_.height};
     window_ = req.window == 0 ? std::numeric_limits<std::size_t>::max() : req.window;
     const double long_side = std::max(box_.width(), box_.height());
     const double short_side = std::min(box_.width(), box_.height());
     list_ = !Open && !(long_side <= kListAspect * short_side);  // NaN-safe: a degenerate box lists
     fill_voids_ = req.fill_voids;
-    classes_ = RadiusClasses<kVoidClasses>(req.radii->min() * unit_.k, rmax_);
+    classes_ = RadiusClasses<kVoidClasses>(frame_.rmin, frame_.rmax);
 
     // The memory limit: the grid's cell heads, then peak_bytes_per_disk per disk generated.
-    grid_ = CellGrid(box_.xmin, box_.ymin, box_.width(), box_.height(), rmax_);
+    grid_ = CellGrid(box_.xmin, box_.ymin, box_.width(), box_.height(), frame_.rmax);
     const std::size_t grid_bytes = grid_.cells() * sizeof(std::int32_t);
     if (req.memory_limit != 0) {
       if (grid_bytes >= req.memory_limit) {
         throw_memory_limit(req.memory_limit,
                            "the grid over a polygon's box (" + std::to_string(grid_.cells()) + " cells) takes " +
                                std::to_string(grid_bytes) + " bytes",
-                           count_of(estimate_disks(req.box, *req.radii), 1e18));
+                           count_of(estimate_disks(region, *req.radii), 1e18));
       }
       control_.limit_memory(req.memory_limit - grid_bytes);
     }
     fixed_bytes_ = grid_bytes;
 
-    const double estimate = estimate_disks(req.box, *req.radii);
+    const double estimate = estimate_disks(region, *req.radii);
     // Room for every disk the front can make: each lies within 5 rmax and two clearances of the
     // box (a disk on the front within 2 rmax and a clearance of a centre in the box, one in a void
     // within as much again of the front's), bound_disks(). A vector that outgrew its reservation
     // held its old and its new array at once, 96 bytes per node (an open form on a 1e-7 high
     // sliver generated 1.7 times the estimate and took 1.3 GB). Reserved pages cost nothing until
     // written; the disk budget (max_disks, the memory limit) caps it.
-    const double bound = bound_disks(req.box, 5 * req.radii->max() + 2 * req.clearance, *req.radii);
+    const double bound = bound_disks(region, 5 * req.radii->max() + 2 * req.clearance, *req.radii);
     const double room = static_cast<double>(control_.budget() - std::min(control_.budget(), out_.size()));
     const std::size_t reserve =
         count_of(std::min(std::max(std::isfinite(bound) ? bound * 1.1 : 0.0, estimate * 1.3), room) + 64, 1e9);
@@ -163,7 +126,7 @@ class Front {
     double r = draw();
     std::size_t skips = 0;
     while (active_ > 0 && skips <= front_size_ + 1) {
-      if (control_.stop(placed(), area_ * unit_.inv_k * unit_.inv_k, result)) {
+      if (control_.stop(placed(), area_ * frame_.unit.inv_k * frame_.unit.inv_k, result)) {
         break;
       }
       if (!segment_active(cur)) {
@@ -172,7 +135,7 @@ class Front {
         continue;
       }
       skips = 0;
-      if (vmask_ != 0 && try_voids(r)) {
+      if (!voids_.empty() && try_voids(r)) {
         area_ += r * r;
         r = draw();
         continue;
@@ -200,10 +163,8 @@ class Front {
     release(anext_);
     release(aprev_);
     release(head_);
-    for (auto& v : voids_) {
-      release(v);
-    }
-    move_out(nodes_, kFirstDisk, origin_, unit_.inv_k, out_);
+    voids_.release();
+    move_out(nodes_, kFirstDisk, frame_.origin, frame_.unit.inv_k, out_);
     result.fixed_bytes = fixed_bytes_;
     return result;
   }
@@ -240,50 +201,22 @@ class Front {
   [[nodiscard]] std::int64_t row(double y) const noexcept { return grid_.row(y); }
   [[nodiscard]] std::size_t cell_of(double x, double y) const noexcept { return grid_.cell_of(x, y); }
 
-  [[nodiscard]] Probe probe(double x, double y, double r) const noexcept { return Probe::at(x, y, r, margin_, band_); }
-
-  // Whether the candidate comes closer to disk o than r + o.r + margin: "overlaps" for the
-  // generator. The margin (half the clearance) keeps every accepted pair apart by more than the
-  // rounding of the output (box corner + local position) can take away, so that no pair overlaps
-  // in the coordinates written out; tangent placements, at the full clearance, always pass.
-  // Outside a narrow band around that distance floating point decides; inside it, the exact
-  // predicate does.
-  bool overlaps(const Probe& p, const Node& o) {
-    const double dx = p.x - o.x;
-    const double dy = p.y - o.y;
-    const double d2 = dx * dx + dy * dy;
-    const double hi = p.r_hi + o.r;
-    if (d2 >= hi * hi) {
-      return false;
-    }
-    const double lo = p.r_lo + o.r;
-    if (lo > 0 && d2 < lo * lo) {
-      return true;
-    }
-    return overlaps_exact(p, o);
-  }
-
-  // Out of line, so that the scan loops keep the disks they test in registers (inlined, the
-  // call's arguments made them copy every disk to the stack).
-  [[gnu::noinline, gnu::cold]] bool overlaps_exact(const Probe& p, const Node& o) {
-    ++stats_.exact_checks;
-    return disks_closer_than_exact({p.x, p.y}, p.r, {o.x, o.y}, o.r, margin_);
-  }
+  [[nodiscard]] Probe probe(double x, double y, double r) const noexcept { return overlap_.probe(x, y, r); }
 
   // Whether a disk at (x, y, r) crosses wall w (open form). A disk within the band of a wall
   // counts as crossing it: walls only guide the generator; containment in the domain is decided
   // exactly by the certifier.
   [[nodiscard]] bool crosses_wall(std::int32_t w, double x, double y, double r) const noexcept {
     switch (w) {
-      case kLeft: return x - r < box_.xmin + band_;
-      case kRight: return x + r > box_.xmax - band_;
-      default: return y - r < box_.ymin + band_;
+      case kLeft: return x - r < box_.xmin + overlap_.band();
+      case kRight: return x + r > box_.xmax - overlap_.band();
+      default: return y - r < box_.ymin + overlap_.band();
     }
   }
 
   // Whether a disk at (x, y, r) overlaps front node v (a disk or a wall).
   bool overlaps_node(const Probe& p, std::int32_t v) {
-    return is_wall(v) ? Open && crosses_wall(v, p.x, p.y, p.r) : overlaps(p, nodes_[static_cast<std::size_t>(v)]);
+    return is_wall(v) ? Open && crosses_wall(v, p.x, p.y, p.r) : overlap_.overlaps(p, nodes_[static_cast<std::size_t>(v)]);
   }
 
   // Whether a disk at (x, y, r) overlaps any placed disk or any wall, other than walls c and n.
@@ -298,7 +231,7 @@ class Front {
     const double r = p.r;
     if constexpr (Open) {
       const bool clear_of_walls =
-          x - r >= box_.xmin + band_ && x + r <= box_.xmax - band_ && y - r >= box_.ymin + band_;
+          x - r >= box_.xmin + overlap_.band() && x + r <= box_.xmax - overlap_.band() && y - r >= box_.ymin + overlap_.band();
       if (!clear_of_walls) {  // most candidates are: one test for the three walls
         for (const std::int32_t w : {kLeft, kBottom, kRight}) {
           if (w != c && w != n && crosses_wall(w, x, y, r)) {
@@ -307,13 +240,13 @@ class Front {
         }
       }
     }
-    const double reach = (p.r_hi + rmax_) * (1 + 1e-9);
+    const double reach = (p.r_hi + frame_.rmax) * (1 + 1e-9);
     const std::int64_t c0 = col(x - reach);
     const std::int64_t c1 = col(x + reach);
     const std::int64_t r0 = row(y - reach);
     const std::int64_t r1 = row(y + reach);
     return visit_cells(head_.data(), grid_.nx, nodes_.data(), kNone, c0, c1, r0, r1,
-                       [&](std::int32_t /*d*/, const Node& o) { return overlaps(p, o); });
+                       [&](std::int32_t /*d*/, const Node& o) { return overlap_.overlaps(p, o); });
   }
 
   // ------------------------------------------------------------------------------------------
@@ -336,36 +269,22 @@ class Front {
   }
 
   bool tangent(std::int32_t c, std::int32_t n, double r, double& px, double& py, bool left = Open) const {
-    const double gap = r + clearance_;
+    const double gap = r + frame_.clearance;
     if (!is_wall(c) && !is_wall(n)) {
       const Node& cn = nodes_[static_cast<std::size_t>(c)];
       const Node& nn = nodes_[static_cast<std::size_t>(n)];
       // Left (open form) or right (closed form) of c -> n.
-      return tangent_to_two(cn.x, cn.y, cn.r + gap, nn.x, nn.y, nn.r + gap, left, scale_, px, py);
+      return tangent_to_two(cn.x, cn.y, cn.r + gap, nn.x, nn.y, nn.r + gap, left, frame_.scale, px, py);
     }
     if (is_wall(c) && is_wall(n)) {
-      // A corner of two walls (Sec. 3: D1 in the corner of Bl and Bb).
-      const bool right = c == kRight || n == kRight;
-      px = right ? box_.xmax - gap : box_.xmin + gap;
-      py = box_.ymin + gap;
-      return true;
+      return tangent_to_two_walls(wall(c), wall(n), gap, px, py);  // Sec. 3: D1 in a corner
     }
-    // A disk and a wall: the centre lies on the wall's line moved in by r, at distance
-    // rd + r from the disk's centre; of the two such points, the one on the free side.
-    const std::int32_t d = is_wall(c) ? n : c;
-    const Wall wl = wall(is_wall(c) ? c : n);
-    const Node& dn = nodes_[static_cast<std::size_t>(d)];
-    const double a = dn.r + gap;
-    const double off = wl.nx * dn.x + wl.ny * dn.y - (wl.w + gap);  // signed distance to the line
-    const double s2 = a * a - off * off;
-    if (!(s2 >= 0)) {
-      return false;
-    }
-    // Along the wall (tx, ty) = rot90(inward normal); wall first: +, disk first: -.
-    const double s = is_wall(c) ? std::sqrt(s2) : -std::sqrt(s2);
-    px = dn.x - off * wl.nx + s * -wl.ny;
-    py = dn.y - off * wl.ny + s * wl.nx;
-    return true;
+    // A disk and a wall: along the wall (tx, ty) = rot90(inward normal); wall first: +, disk
+    // first: -.
+    const bool wall_first = is_wall(c);
+    const Wall wl = wall(wall_first ? c : n);
+    const Node& dn = nodes_[static_cast<std::size_t>(wall_first ? n : c)];
+    return tangent_to_disk_and_wall(dn.x, dn.y, dn.r, wl, -wl.ny, wl.nx, gap, wall_first, false, px, py);
   }
 
   // ------------------------------------------------------------------------------------------
@@ -570,7 +489,7 @@ class Front {
     const Node& o = nodes_[static_cast<std::size_t>(c)];
     const double dx = o.x - ox_;
     const double dy = o.y - oy_;
-    const double far = 6.06 * static_cast<double>(window_ + 1) * rmax_;
+    const double far = 6.06 * static_cast<double>(window_ + 1) * frame_.rmax;
     return dx * dx + dy * dy <= far * far;
   }
 
@@ -734,23 +653,17 @@ class Front {
     if (k <= 0 || t == kNone || (Open && s == kRight)) {
       return;
     }
-    voids_[static_cast<std::size_t>(k)].push_back(VoidSeg{s, t});
-    vmask_ |= 1U << static_cast<unsigned>(k);
+    voids_.push(k, VoidSeg{s, t});
   }
 
   // Tries r in the voids; true if it was placed.
   bool try_voids(double r) {
     const int cls = void_class(r);
-    const std::uint32_t eligible = vmask_ & ~((2U << static_cast<unsigned>(cls)) - 1U);
-    if (eligible == 0) {
+    const int k = voids_.first_above(cls);
+    if (k < 0) {
       return false;
     }
-    const auto k = static_cast<std::size_t>(std::countr_zero(eligible));
-    const VoidSeg v = voids_[k].back();
-    voids_[k].pop_back();
-    if (voids_[k].empty()) {
-      vmask_ &= ~(1U << static_cast<unsigned>(k));
-    }
+    const VoidSeg v = voids_.pop(k);
     ++stats_.attempts;
     double px = 0;
     double py = 0;
@@ -763,8 +676,7 @@ class Front {
       return true;
     }
     if (cls > 0) {
-      voids_[static_cast<std::size_t>(cls)].push_back(v);
-      vmask_ |= 1U << static_cast<unsigned>(cls);
+      voids_.push(cls, v);
     }
     return false;
   }
@@ -775,14 +687,12 @@ class Front {
   // Sec. 2.1: three mutually tangent disks D1, D2, D3, anticlockwise, at the start point; the
   // front D1 -> D2 -> D3 -> D1.
   std::int32_t start_closed() {
-    const Point s =
-        req_.start ? Point{(req_.start->x - origin_.x) * unit_.k, (req_.start->y - origin_.y) * unit_.k}
-                   : Point{box_.xmax / 2, box_.ymax / 2};
+    const Point s = req_.start ? frame_.local(*req_.start) : Point{box_.xmax / 2, box_.ymax / 2};
     const double r1 = draw();
     const double r2 = draw();
     const double r3 = draw();
     const std::int32_t d1 = add_node(s.x, s.y, r1);
-    const std::int32_t d2 = add_node(s.x + r1 + r2 + clearance_, s.y, r2);
+    const std::int32_t d2 = add_node(s.x + r1 + r2 + frame_.clearance, s.y, r2);
     // D3 on the left of D1 -> D2 makes the triangle anticlockwise: compute it with the open
     // form's side convention, then restore the closed form's.
     double px = 0;
@@ -811,20 +721,15 @@ class Front {
     return kLeft;
   }
 
-  double draw() { return req_.radii->quantile(rng_.uniform()) * unit_.k; }
+  double draw() { return frame_.draw(rng_); }
 
-  const FrontRequest& req_;
+  const FrontSettings& req_;
   Rng& rng_;
   std::vector<Disk>& out_;
   FillStats& stats_;
-  WorkScale unit_;
-  Point origin_;
-  Box box_;
-  double rmax_ = 0;
-  LengthScale scale_;  // for tangent_to_two
-  double clearance_ = 0;
-  double margin_ = 0;
-  double band_ = 0;
+  RunFrame frame_;
+  OverlapTest overlap_;
+  Box box_;  // local: (0, 0) to (width, height)
   std::size_t window_ = 5;
   RunControl control_;
   std::size_t fixed_bytes_ = 0;  // the grid's, for the memory limit's message
@@ -850,18 +755,18 @@ class Front {
   };
   bool fill_voids_ = true;
   RadiusClasses<kVoidClasses> classes_;
-  std::array<std::vector<VoidSeg>, kVoidClasses> voids_;
-  std::uint32_t vmask_ = 0;  // bit k: voids_[k] is not empty
+  VoidBuckets<VoidSeg, kVoidClasses> voids_;
 };
 
 }  // namespace
 
-FrontResult advance_front(const FrontRequest& req, Rng& rng, std::vector<Disk>& out, FillStats& stats) {
-  if (req.method == Method::open) {
-    Front<true> front(req, rng, out, stats);
+FrontResult advance_front(const FrontSettings& settings, const Box& box, Rng& rng, std::vector<Disk>& out,
+                          FillStats& stats) {
+  if (settings.method == Method::open) {
+    Front<true> front(settings, box, rng, out, stats);
     return front.run();
   }
-  Front<false> front(req, rng, out, stats);
+  Front<false> front(settings, box, rng, out, stats);
   return front.run();
 }
 

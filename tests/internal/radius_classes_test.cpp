@@ -1,4 +1,4 @@
-// RadiusClasses (src/generate/cell_grid.hpp), the void buckets' radius classes: its table lookup gives
+// RadiusClasses (src/generate/void_buckets.hpp), the void buckets' radius classes: its table lookup gives
 // exactly the class a binary search over the same floors gives, for radii across and beyond the
 // range, at and next to every floor, for ranges from a few ulps wide to 600 orders of magnitude.
 #include <gtest/gtest.h>
@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "generate/cell_grid.hpp"
+#include "generate/void_buckets.hpp"
 
 namespace {
 

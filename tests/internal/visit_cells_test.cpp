@@ -1,4 +1,4 @@
-// visit_cells() (src/generate/cell_grid.hpp), the generators' grid scan: it visits exactly the disks a
+// visit_cells() (src/generate/disk_grid.hpp), the generators' grid scan: it visits exactly the disks a
 // plain walk of the cells' chains visits, in the same order (the generators' choices, and so
 // their packings, depend on it), stops where the visitor says, and does so both for blocks of up
 // to 32 cells (gathered first) and for larger ones, with either end-of-chain marker the
@@ -13,7 +13,7 @@
 #include <utility>
 #include <vector>
 
-#include "generate/cell_grid.hpp"
+#include "generate/disk_grid.hpp"
 
 namespace {
 

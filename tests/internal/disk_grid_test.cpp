@@ -1,4 +1,4 @@
-// CellGrid (src/generate/cell_grid.hpp), the generators' uniform grid, at the ends of the double range: a
+// CellGrid (src/generate/disk_grid.hpp; WorkScale: src/generate/scale.hpp), the generators' uniform grid, at the ends of the double range: a
 // radius whose margin of 4 rmax overflows, or whose cell's reciprocal does, gets one cell that
 // every finite coordinate near the box maps into (the grid was sized from a NaN before: an
 // undefined conversion, and the boundary method asked for an absurd allocation); ordinary radii
@@ -10,7 +10,8 @@
 #include <cstdint>
 #include <limits>
 
-#include "generate/cell_grid.hpp"
+#include "generate/disk_grid.hpp"
+#include "generate/scale.hpp"
 
 namespace {
 
