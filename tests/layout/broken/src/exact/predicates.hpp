@@ -1,0 +1,2 @@
+#pragma once
+#include <CGAL/Interval_nt.h>
