@@ -443,9 +443,8 @@ Panel make_panel(std::span<const frontpack::Disk> disks, const RenderOptions& op
     hi = hi < std::numeric_limits<double>::max() / 1.1 ? hi * 1.1 : std::numeric_limits<double>::max();
     bins |= 1;
   }
-  for (std::size_t b = 0; b <= bins; ++b) {
-    panel.edges.push_back(b == bins ? hi : lo + (hi - lo) * static_cast<double>(b) / static_cast<double>(bins));
-  }
+  const frontpack::RadiusBins binning(lo, hi, bins, frontpack::BinSpacing::linear);
+  panel.edges = binning.edges();
   panel.achieved.assign(bins, 0.0);
   // Areas r^2 at a scale k (a power of two) where they neither overflow nor underflow: 1 but for
   // radii beyond 2^400 (a disk of radius 1e308 made the total infinite and its share a NaN) or
@@ -457,17 +456,7 @@ Panel make_panel(std::span<const frontpack::Disk> disks, const RenderOptions& op
     total += area(r);
   }
   for (const double r : radii) {
-    const double t = std::floor((r - lo) / (hi - lo) * static_cast<double>(bins));
-    // (NaN-safe: the conversion of a NaN is undefined.)
-    auto b = t > 0 ? (t < static_cast<double>(bins - 1) ? static_cast<std::size_t>(t) : bins - 1) : std::size_t{0};
-    // The computed index may be off by one at an edge: settle on the edges themselves.
-    while (b > 0 && r < panel.edges[b]) {
-      --b;
-    }
-    while (b + 1 < bins && r >= panel.edges[b + 1]) {
-      ++b;
-    }
-    panel.achieved[b] += area(r) / total;
+    panel.achieved[binning.bin_of(r)] += area(r) / total;
   }
   if (request != nullptr) {
     // Mass at an edge belongs to the bin above it, as for the disks.
