@@ -117,8 +117,7 @@ int run_check(const CheckArgs& a) {
 Command add_check(CLI::App& app) {
   auto args = std::make_shared<CheckArgs>();
   CLI::App* cmd = app.add_subcommand("check", "Certify any packing exactly: no overlap, every disk inside");
-  cmd->add_option("DOMAIN", args->domain, "WKT file")->required();
-  cmd->add_option("DISKS", args->disks, "disk file: .csv (x,y,r) or .txt/.yade (Yade x y z r)")->required();
+  add_packing_files(*cmd, args->domain, args->disks, "disk file: .csv (x,y,r) or .txt/.yade (Yade x y z r)");
   cmd->add_flag("--all", args->all, "list every disk outside and every overlapping pair");
   cmd->add_option("--json", args->json, "write the report as JSON to this file");
   cmd->add_flag("-q,--quiet", args->quiet, "print nothing but errors; the exit code tells");

@@ -67,8 +67,7 @@ int run_render(const RenderArgs& a) {
 Command add_render(CLI::App& app) {
   auto args = std::make_shared<RenderArgs>();
   CLI::App* cmd = app.add_subcommand("render", "Draw a packing: PNG, SVG or PDF, disks coloured by radius");
-  cmd->add_option("DOMAIN", args->domain, "WKT file")->required();
-  cmd->add_option("DISKS", args->disks, "disk file: .csv or .txt/.yade")->required();
+  add_packing_files(*cmd, args->domain, args->disks, "disk file: .csv or .txt/.yade");
   cmd->add_option("-o,--output", args->outputs, "picture file(s): .png, .svg or .pdf")->required();
   cmd->add_option("--format", args->format, "png, svg or pdf instead of the extension");
   cmd->add_option("--width", args->width, "width in pixels (height: the domain's, plus the histogram)")

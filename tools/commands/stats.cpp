@@ -85,8 +85,7 @@ int run_stats(const StatsArgs& a) {
 Command add_stats(CLI::App& app) {
   auto args = std::make_shared<StatsArgs>();
   CLI::App* cmd = app.add_subcommand("stats", "Packing statistics: fractions, coordination, radii");
-  cmd->add_option("DOMAIN", args->domain, "WKT file")->required();
-  cmd->add_option("DISKS", args->disks, "disk file: .csv or .txt/.yade")->required();
+  add_packing_files(*cmd, args->domain, args->disks, "disk file: .csv or .txt/.yade");
   cmd->add_option("--radius", args->radius, "compare the radii with this requested distribution");
   cmd->add_option("--samples", args->samples, "sample points for the interior and band fractions")
       ->capture_default_str();
