@@ -23,6 +23,7 @@
 
 #include "generate/cell_grid.hpp"
 #include "common/huge_pages.hpp"
+#include "common/packing_density.hpp"
 #include "exact/overlap.hpp"
 
 namespace frontpack::detail {
@@ -1218,7 +1219,7 @@ class BoundaryFront {
   static constexpr int kSeedTries = 256;
 
   bool seed(double r) {
-    if (seeds_ >= kSeeds || std::numbers::pi * area_ >= 0.5 * 0.82 * polygon_area_) {
+    if (seeds_ >= kSeeds || std::numbers::pi * area_ >= 0.5 * kRandomDenseFraction * polygon_area_) {
       return false;
     }
     ++seeds_;
