@@ -13,7 +13,11 @@ namespace frontpack::detail {
 
 // The "how bad" figures of a report, in floating point from the exact decisions. The distance
 // from a centre to the boundary comes from an AABB tree of the domain's edges (CGAL 5.5's tree is
-// 3D: the edges lie in the plane z = 0), built only when some disk is outside.
+// 3D: the edges lie in the plane z = 0), built only when some disk is outside. Not the float
+// distance index of domain/edge_distance.hpp: that grid answers "which edges lie within d of p"
+// for a d known in advance, and a nearest-edge query from a centre far outside or deep in a large
+// hole would visit every cell between; the tree's query is logarithmic wherever the point is, and
+// `frontpack check` takes anyone's disks. No decision depends on this figure.
 void measure_worst(const Domain& domain, std::span<const Disk> disks, CertifyReport& report) {
   for (const auto& [i, j] : report.overlapping) {
     const Disk& a = disks[i];
