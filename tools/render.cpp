@@ -1,4 +1,5 @@
 #include "render.hpp"
+#include "render_parts.hpp"
 
 #include <cairo-pdf.h>
 #include <cairo-svg.h>
@@ -25,32 +26,15 @@ namespace frontpack_tool {
 
 namespace {
 
+using render_parts::ColourScale;
+using render_parts::font_px;
+using render_parts::kLevels;
+using render_parts::kMarginFraction;
+using render_parts::Rgb;
+
 std::string lower(std::string s) {
   std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
   return s;
-}
-
-struct Rgb {
-  double r, g, b;
-};
-
-// viridis (matplotlib's perceptually uniform map) at 9 evenly spaced anchors, interpolated
-// linearly in between.
-Rgb viridis(double t) {
-  static constexpr std::array<std::array<int, 3>, 9> kAnchors = {{{68, 1, 84},
-                                                                  {72, 40, 120},
-                                                                  {62, 73, 137},
-                                                                  {49, 104, 142},
-                                                                  {38, 130, 142},
-                                                                  {31, 158, 137},
-                                                                  {53, 183, 121},
-                                                                  {110, 206, 88},
-                                                                  {253, 231, 37}}};
-  t = std::clamp(t, 0.0, 1.0) * static_cast<double>(kAnchors.size() - 1);
-  const auto k = std::min(static_cast<std::size_t>(t), kAnchors.size() - 2);
-  const double f = t - static_cast<double>(k);
-  const auto mix = [&](std::size_t c) { return ((1 - f) * kAnchors[k][c] + f * kAnchors[k + 1][c]) / 255.0; };
-  return {mix(0), mix(1), mix(2)};
 }
 
 // Where Cairo's output goes. For SVG, `insert` (a <title> element) is written right after the
@@ -122,29 +106,6 @@ struct View {
   [[nodiscard]] double units(double pixels) const { return pixels / scale / k; }  // and back
   [[nodiscard]] double x(double v) const { return margin + px(v - x0); }
   [[nodiscard]] double y(double v) const { return height - margin - px(v - y0); }
-};
-
-constexpr double kMarginFraction = 0.02;
-
-// Disk colours: 64 levels of viridis, linear in radius from the smallest disk to the largest.
-constexpr std::size_t kLevels = 64;
-struct ColourScale {
-  double rmin = INFINITY;
-  double rmax = -INFINITY;
-  explicit ColourScale(std::span<const frontpack::Disk> disks) {
-    for (const frontpack::Disk& d : disks) {
-      rmin = std::min(rmin, d.radius);
-      rmax = std::max(rmax, d.radius);
-    }
-  }
-  [[nodiscard]] std::size_t level(double r) const {
-    if (!(rmax > rmin)) {
-      return kLevels / 2;
-    }
-    const double t = (r - rmin) / (rmax - rmin);
-    return std::min(kLevels - 1, static_cast<std::size_t>(std::max(0.0, t) * kLevels));
-  }
-  [[nodiscard]] static Rgb colour(std::size_t level) { return viridis((static_cast<double>(level) + 0.5) / kLevels); }
 };
 
 // The picture's rectangle in domain coordinates, grown by `pad` pixels on every side.
@@ -347,31 +308,9 @@ View make_view(const frontpack::Domain& domain, int width_px) {
   return view;
 }
 
-int font_px(int width_px) {
-  return std::clamp(width_px / 80, 10, 18);
-}
-
 int packing_height(const frontpack::Domain& domain, int width_px) {
   const View view = make_view(domain, width_px);
   return static_cast<int>(std::ceil(view.px(domain.bbox().height()) + 2 * view.margin));
-}
-
-std::string format_g(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%g", v);
-  return buf;
-}
-
-// Text for Cairo's toy API must be valid UTF-8: user text (a --radius spec) is reduced to
-// printable ASCII.
-std::string printable(std::string_view text) {
-  std::string out(text);
-  for (char& c : out) {
-    if (static_cast<unsigned char>(c) < 0x20 || static_cast<unsigned char>(c) >= 0x7f) {
-      c = '?';
-    }
-  }
-  return out;
 }
 
 std::string xml_escaped(std::string_view text) {
@@ -388,271 +327,6 @@ std::string xml_escaped(std::string_view text) {
     }
   }
   return out;
-}
-
-// 1, 2 or 5 times a power of ten, at least `raw` (> 0).
-double nice_step(double raw) {
-  const double p = std::pow(10.0, std::floor(std::log10(raw)));
-  for (const double m : {1.0, 2.0, 5.0, 10.0}) {
-    if (m * p >= raw) {
-      return m * p;
-    }
-  }
-  return 10 * p;
-}
-
-// The size-distribution panel's content: bins of equal width in radius over the achieved and
-// requested ranges, the share of the total disk area in each (achieved and requested), and the
-// caption.
-struct Panel {
-  std::vector<double> edges;      // bins + 1 edges; bin b is [edges[b], edges[b + 1]), the last one closed
-  std::vector<double> achieved;   // share of the disks' total area per bin
-  std::vector<double> requested;  // the requested distribution's, per bin (empty if none)
-  std::string caption[2];
-};
-
-Panel make_panel(std::span<const frontpack::Disk> disks, const RenderOptions& options) {
-  Panel panel;
-  std::vector<double> radii;
-  radii.reserve(disks.size());
-  for (const frontpack::Disk& d : disks) {
-    radii.push_back(d.radius);
-  }
-  const frontpack::RadiusDistribution* request = options.requested ? &options.requested->distribution() : nullptr;
-  const frontpack::SizeStats s = frontpack::measure_sizes(radii, request, 0);
-  const std::string spec =
-      printable(options.requested_spec.empty() && request != nullptr ? request->describe() : options.requested_spec);
-
-  double lo = radii.empty() ? INFINITY : s.rmin;
-  double hi = radii.empty() ? -INFINITY : s.rmax;
-  if (request != nullptr) {
-    lo = std::min(lo, request->min());
-    hi = std::max(hi, request->max());
-  }
-  if (!(lo <= hi)) {
-    panel.caption[0] = "no disks";
-    return panel;
-  }
-  // About sqrt(n) bins, 5 to 40, and at least 8 px wide; an odd number around a single radius,
-  // so that it sits in the middle of the axis.
-  const double root_n = std::sqrt(static_cast<double>(radii.size()));
-  std::size_t bins = static_cast<std::size_t>(std::clamp(std::round(root_n), 5.0, 40.0));
-  bins = std::min(bins, static_cast<std::size_t>(std::max(1, options.width_px / 8)));
-  if (!(hi > lo)) {
-    lo *= 0.9;
-    hi = hi < std::numeric_limits<double>::max() / 1.1 ? hi * 1.1 : std::numeric_limits<double>::max();
-    bins |= 1;
-  }
-  for (std::size_t b = 0; b <= bins; ++b) {
-    panel.edges.push_back(b == bins ? hi : lo + (hi - lo) * static_cast<double>(b) / static_cast<double>(bins));
-  }
-  panel.achieved.assign(bins, 0.0);
-  // Areas r^2 at a scale k (a power of two) where they neither overflow nor underflow: 1 but for
-  // radii beyond 2^400 (a disk of radius 1e308 made the total infinite and its share a NaN) or
-  // below 2^-400.
-  const double k = hi > 0x1p400 || hi < 0x1p-400 ? std::ldexp(1.0, -std::clamp(std::ilogb(hi), -1000, 1000)) : 1.0;
-  const auto area = [k](double r) { return (r * k) * (r * k); };
-  double total = 0;
-  for (const double r : radii) {
-    total += area(r);
-  }
-  for (const double r : radii) {
-    const double t = std::floor((r - lo) / (hi - lo) * static_cast<double>(bins));
-    // (NaN-safe: the conversion of a NaN is undefined.)
-    auto b = t > 0 ? (t < static_cast<double>(bins - 1) ? static_cast<std::size_t>(t) : bins - 1) : std::size_t{0};
-    // The computed index may be off by one at an edge: settle on the edges themselves.
-    while (b > 0 && r < panel.edges[b]) {
-      --b;
-    }
-    while (b + 1 < bins && r >= panel.edges[b + 1]) {
-      ++b;
-    }
-    panel.achieved[b] += area(r) / total;
-  }
-  if (request != nullptr) {
-    // Mass at an edge belongs to the bin above it, as for the disks.
-    const auto below = [&](std::size_t b) {
-      return b == 0 ? 0.0 : b == bins ? 1.0 : request->area_cdf(std::nextafter(panel.edges[b], 0.0));
-    };
-    for (std::size_t b = 0; b < bins; ++b) {
-      panel.requested.push_back(std::max(0.0, below(b + 1) - below(b)));
-    }
-  }
-
-  char buf[160];
-  std::snprintf(buf, sizeof buf, "Disk area per radius bin (%zu disks, bins of %.3g)%s", s.count,
-                (hi - lo) / static_cast<double>(bins), request != nullptr ? "; line: requested" : "");
-  panel.caption[0] = buf;
-  if (request != nullptr && s.count > 0) {
-    std::snprintf(buf, sizeof buf, "KS by area %.4f (requested: ", s.ks_area);
-    panel.caption[1] = buf;
-    panel.caption[1].append(spec).append(")");
-  } else if (request != nullptr) {
-    panel.caption[1] = "no disks (requested: ";
-    panel.caption[1].append(spec).append(")");
-  } else {
-    std::snprintf(buf, sizeof buf, "radius min %g, median by area %g, max %g", s.rmin, s.median_area, s.rmax);
-    panel.caption[1] = buf;
-  }
-  return panel;
-}
-
-double text_width(cairo_t* cr, const std::string& text) {
-  cairo_text_extents_t e;
-  cairo_text_extents(cr, text.c_str(), &e);
-  return e.x_advance;
-}
-
-void show_text(cairo_t* cr, double x, double y, const std::string& text) {
-  cairo_move_to(cr, x, y);
-  cairo_show_text(cr, text.c_str());
-}
-
-// Draws the panel in the band [top, top + histogram_height(width_px)) of the picture.
-void draw_panel(cairo_t* cr, const Panel& panel, const ColourScale& colours, double top, int width_px) {
-  const double w = width_px;
-  const double f = font_px(width_px);
-  const double bottom = top + histogram_height(width_px);
-  const double margin = kMarginFraction * w;
-  cairo_select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
-  const auto caption_line = [&](int k, double baseline) {
-    // Shrunk to fit the width if need be (a few rounds: hinted advances do not scale exactly).
-    const double available = w - 2 * margin;
-    double size = f;
-    cairo_set_font_size(cr, size);
-    for (int round = 0; round < 4; ++round) {
-      const double tw = text_width(cr, panel.caption[k]);
-      if (tw <= available || size <= 1) {
-        break;
-      }
-      size = std::max(1.0, size * 0.98 * available / tw);
-      cairo_set_font_size(cr, size);
-    }
-    cairo_set_source_rgb(cr, 0.1, 0.1, 0.1);
-    show_text(cr, margin, baseline, panel.caption[k]);
-    cairo_set_font_size(cr, f);
-  };
-  caption_line(0, bottom - 1.8 * f);
-  caption_line(1, bottom - 0.5 * f);
-  const std::size_t bins = panel.achieved.size();
-  if (bins == 0) {
-    return;
-  }
-
-  // y axis: nice ticks from 0 to at least the tallest bar or step.
-  double ymax = 0;
-  for (std::size_t b = 0; b < bins; ++b) {
-    ymax = std::max({ymax, panel.achieved[b], panel.requested.empty() ? 0.0 : panel.requested[b]});
-  }
-  const double ystep = nice_step(ymax > 0 ? ymax / 4 : 0.25);
-  const double ytop = std::max(1.0, std::ceil(ymax / ystep - 1e-9)) * ystep;
-  const int yticks = static_cast<int>(std::lround(ytop / ystep));
-  double ylabel_width = 0;
-  for (int k = 0; k <= yticks; ++k) {
-    ylabel_width = std::max(ylabel_width, text_width(cr, format_g(k * ystep)));
-  }
-  const std::string lo_label = format_g(panel.edges.front());
-  const std::string hi_label = format_g(panel.edges.back());
-  const double left = margin + 1.5 * f + ylabel_width + 0.5 * f;
-  const double right = w - margin - std::max(0.5 * text_width(cr, hi_label), 0.2 * f);
-  const double plot_top = top + 0.6 * f;
-  const double axis_y = bottom - 5.8 * f;
-  if (!(right - left >= 4 && axis_y - plot_top >= 4)) {
-    return;  // too narrow a picture for a plot: the caption only
-  }
-  const double lo = panel.edges.front();
-  const double hi = panel.edges.back();
-  const auto px = [&](double r) { return left + (r - lo) / (hi - lo) * (right - left); };
-  const auto py = [&](double v) { return axis_y - v / ytop * (axis_y - plot_top); };
-
-  // Grid lines and y tick labels.
-  cairo_set_line_width(cr, 1);
-  for (int k = 0; k <= yticks; ++k) {
-    const double v = k * ystep;
-    const std::string label = format_g(v);
-    cairo_set_source_rgb(cr, 0.88, 0.88, 0.88);
-    cairo_move_to(cr, left, std::round(py(v)) + 0.5);
-    cairo_line_to(cr, right, std::round(py(v)) + 0.5);
-    cairo_stroke(cr);
-    cairo_set_source_rgb(cr, 0.1, 0.1, 0.1);
-    show_text(cr, left - 0.4 * f - text_width(cr, label), py(v) + 0.35 * f, label);
-  }
-  cairo_save(cr);
-  cairo_move_to(cr, margin + 1.1 * f, 0.5 * (plot_top + axis_y) + 0.5 * text_width(cr, "area fraction"));
-  cairo_rotate(cr, -std::numbers::pi / 2);
-  cairo_show_text(cr, "area fraction");
-  cairo_restore(cr);
-
-  // Bars, coloured as the disks of the bin's middle radius are; a hairline gap when they are wide.
-  for (std::size_t b = 0; b < bins; ++b) {
-    if (!(panel.achieved[b] > 0)) {
-      continue;
-    }
-    double x0 = px(panel.edges[b]);
-    double x1 = px(panel.edges[b + 1]);
-    if (x1 - x0 >= 4) {
-      x0 += 0.5;
-      x1 -= 0.5;
-    }
-    const Rgb c = ColourScale::colour(colours.level(0.5 * (panel.edges[b] + panel.edges[b + 1])));
-    cairo_set_source_rgb(cr, c.r, c.g, c.b);
-    cairo_rectangle(cr, x0, py(panel.achieved[b]), x1 - x0, axis_y - py(panel.achieved[b]));
-    cairo_fill(cr);
-  }
-  // The request, as a step line over the same bins.
-  if (!panel.requested.empty()) {
-    cairo_new_path(cr);
-    cairo_move_to(cr, px(lo), py(0));
-    for (std::size_t b = 0; b < bins; ++b) {
-      cairo_line_to(cr, px(panel.edges[b]), py(panel.requested[b]));
-      cairo_line_to(cr, px(panel.edges[b + 1]), py(panel.requested[b]));
-    }
-    cairo_line_to(cr, px(hi), py(0));
-    cairo_set_source_rgb(cr, 0.8, 0.15, 0.1);
-    cairo_set_line_width(cr, std::max(1.5, w / 600));
-    cairo_set_line_join(cr, CAIRO_LINE_JOIN_MITER);
-    cairo_stroke(cr);
-  }
-
-  // Axes, x ticks (the range's ends and nice values between, without overlapping labels).
-  cairo_set_source_rgb(cr, 0.15, 0.15, 0.15);
-  cairo_set_line_width(cr, 1);
-  cairo_move_to(cr, left, plot_top);
-  cairo_line_to(cr, left, axis_y);
-  cairo_line_to(cr, right, axis_y);
-  cairo_stroke(cr);
-  std::vector<double> ticks{lo};
-  const double xstep = nice_step((hi - lo) / 5);
-  // Counted, not accumulated: a step below the spacing of doubles near lo cannot loop forever.
-  const double first = std::ceil(lo / xstep);
-  for (int k = 0; k <= 10; ++k) {
-    const double t = (first + k) * xstep;
-    if (t > lo && t < hi) {
-      ticks.push_back(t);
-    }
-  }
-  ticks.push_back(hi);
-  const double label_y = axis_y + 0.3 * f + 1.0 * f;
-  const double gap = 0.8 * f;
-  const double hi_left = px(hi) - 0.5 * text_width(cr, hi_label);
-  double last_right = -INFINITY;
-  for (std::size_t k = 0; k < ticks.size(); ++k) {
-    const bool end = k == 0 || k + 1 == ticks.size();
-    const std::string label = format_g(ticks[k]);
-    const double x = px(ticks[k]);
-    const double lw = text_width(cr, label);
-    const double x0 = k == 0 ? std::max(x - 0.5 * lw, margin) : x - 0.5 * lw;
-    if (!end && (x0 < last_right + gap || x0 + lw > hi_left - gap)) {
-      continue;
-    }
-    cairo_move_to(cr, x, axis_y);
-    cairo_line_to(cr, x, axis_y + 0.3 * f);
-    cairo_stroke(cr);
-    show_text(cr, x0, label_y, label);
-    last_right = x0 + lw;
-  }
-  const std::string xlabel = "radius";
-  show_text(cr, 0.5 * (left + right) - 0.5 * text_width(cr, xlabel), label_y + 1.4 * f, xlabel);
 }
 
 }  // namespace
@@ -702,10 +376,10 @@ void render(frontpack::OutputFile& out, Picture format, const frontpack::Domain&
   const int height = picture_height(domain, width, options.histogram);
   View view = make_view(domain, width);
   view.height = packing_height(domain, width);
-  std::optional<Panel> histogram;
+  std::optional<render_parts::Panel> histogram;
   std::string caption;
   if (options.histogram) {
-    histogram = make_panel(disks, options);
+    histogram = render_parts::make_panel(disks, options);
     caption.append("frontpack packing. ").append(histogram->caption[0]);
     if (!histogram->caption[1].empty()) {
       caption.append(". ").append(histogram->caption[1]);
@@ -736,7 +410,7 @@ void render(frontpack::OutputFile& out, Picture format, const frontpack::Domain&
       throw frontpack::CancelledError();
     }
     if (histogram) {
-      draw_panel(cr.get(), *histogram, ColourScale(disks), view.height, width);
+      render_parts::draw_panel(cr.get(), *histogram, ColourScale(disks), view.height, width);
     }
     check(cairo_status(cr.get()), path);
   }

@@ -41,6 +41,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <optional>
 #include <span>
 #include <stop_token>
@@ -81,6 +82,34 @@ struct SizeClassRow {
   double requested_area_passing = 0;
   double achieved_number_passing = 0;
   double achieved_area_passing = 0;
+};
+
+/// How the bins of a radius histogram are spaced: equal ratios (SizeStats::histogram) or equal
+/// widths (the tool's picture panel).
+enum class BinSpacing : std::uint8_t { log, linear };
+
+/// The bins of a radius histogram over [lo, hi]: bin b is [edges()[b], edges()[b + 1]), the last
+/// one closed; edges()[0] is lo and edges()[count()] is hi, exactly. The one binning of radii
+/// that measure_sizes() and the tool's pictures share.
+class RadiusBins {
+ public:
+  /// Preconditions: count >= 1, lo <= hi, and lo > 0 for log spacing (else the bins are
+  /// meaningless, though bin_of() still returns a bin). log spacing of a range wider than the
+  /// doubles' ratios (hi / lo overflows) takes its edges from log(lo).
+  RadiusBins(double lo, double hi, std::size_t count, BinSpacing spacing);
+
+  [[nodiscard]] const std::vector<double>& edges() const noexcept { return edges_; }
+  [[nodiscard]] std::size_t count() const noexcept { return edges_.size() - 1; }
+  /// The bin holding x, settled by comparing x with the edges themselves (the index computed
+  /// from x is a first guess that may be off by one at an edge). x below lo, and NaN, give bin 0;
+  /// x above hi the last bin.
+  [[nodiscard]] std::size_t bin_of(double x) const noexcept;
+
+ private:
+  BinSpacing spacing_;
+  double lo_;
+  double span_;  // log(hi / lo) or hi - lo
+  std::vector<double> edges_;
 };
 
 /// A histogram bin [lo, hi) (the last one closed): the disks in it and their share of the number

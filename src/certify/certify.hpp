@@ -1,28 +1,23 @@
-// The certifier's parts (the global overlap pass, exact containment): CGAL-free declarations,
-// defined in certify/certify.cpp (CGAL).
+// The certifier's two entry points, composed from the same parts (cull.hpp, overlap_pass.hpp,
+// report.hpp): frontpack::certify() reports on any set of disks; certify_fill() below removes
+// from a fill's output what the report would name. CGAL-free.
 #pragma once
 
 #include <cstddef>
-#include <cstdint>
 #include <span>
 #include <stop_token>
-#include <utility>
 #include <vector>
 
-#include "frontpack/domain.hpp"
-#include "frontpack/geometry.hpp"
+#include "frontpack/fill.hpp"
 
 namespace frontpack::detail {
 
-/// Every pair (i < j) of disks whose interiors intersect, decided exactly, sorted. Candidates
-/// come from CGAL::box_self_intersection_d over boxes rounded outwards; `candidates` counts them.
-/// Disks with a non-finite centre or radius, or a negative radius, take part in no pair. Throws
-/// CancelledError once `stop` is requested (checked per tile, about 2^17 disks).
-void overlapping_pairs(std::span<const Disk> disks, std::vector<std::pair<std::size_t, std::size_t>>& out,
-                       std::size_t& candidates, const std::stop_token& stop = {});
-
-/// Domain::contains in blocks of 2^16 disks, with `stop` checked between blocks.
-void contains(const Domain& domain, std::span<const Disk> disks, std::span<std::uint8_t> inside,
-              const std::stop_token& stop);
+/// Certifies a fill's raw output in place: culls the disks not inside their own polygon
+/// (contains_in_own_polygon(), `part_end` as there), then drops one disk of every overlapping pair
+/// (drop_one_of_each_pair(); frontpack's generators never make one). Returns the certificate and
+/// records the two passes' wall times in stats.seconds_cull and stats.seconds_overlap. Throws
+/// CancelledError once `stop` is requested.
+Certificate certify_fill(const Domain& domain, std::vector<Disk>& disks, std::span<const std::size_t> part_end,
+                         const std::stop_token& stop, FillStats& stats);
 
 }  // namespace frontpack::detail

@@ -7,15 +7,22 @@
 
 namespace frontpack::detail {
 
+/// splitmix64 (Steele, Lea & Flood 2014) at `state`: the output of the generator whose state
+/// was `state` before its step, a 64-bit hash of `state` with every bit mixed. The seed mixer of
+/// Rng, and the hash of the stratified sampling in stats.
+[[nodiscard]] constexpr std::uint64_t splitmix64(std::uint64_t state) noexcept {
+  std::uint64_t z = state + 0x9e3779b97f4a7c15ULL;
+  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+  z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+  return z ^ (z >> 31);
+}
+
 class Rng {
  public:
   explicit Rng(std::uint64_t seed) noexcept {
     for (std::uint64_t& word : s_) {
-      seed += 0x9e3779b97f4a7c15ULL;  // splitmix64
-      std::uint64_t z = seed;
-      z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
-      z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
-      word = z ^ (z >> 31);
+      word = splitmix64(seed);
+      seed += 0x9e3779b97f4a7c15ULL;
     }
   }
 

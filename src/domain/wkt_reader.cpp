@@ -8,6 +8,7 @@
 
 #include "frontpack/errors.hpp"
 #include "common/numbers.hpp"
+#include "common/text.hpp"
 
 namespace frontpack::detail {
 
@@ -38,10 +39,7 @@ bool is_digit(char c) noexcept {
 }
 
 std::string upper(std::string_view s) {
-  std::string out(s);
-  std::transform(out.begin(), out.end(), out.begin(),
-                 [](char c) { return static_cast<char>(std::toupper(static_cast<unsigned char>(c))); });
-  return out;
+  return ascii_upper(s);
 }
 
 // Other OGC / ISO geometry types: recognised so that the message can say "unsupported" rather

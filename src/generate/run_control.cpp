@@ -5,14 +5,15 @@
 #include <numbers>
 #include <string>
 
+#include "common/packing_density.hpp"
 #include "generate/scale.hpp"
 
 namespace frontpack::detail {
 
 double estimate_disks(const Box& box, const RadiusDistribution& radii) {
-  // A random dense packing covers about 0.82 of the area (paper, Sec. 4; our measurements).
+  // At the estimate's density (common/packing_density.hpp).
   const double mean_square = radii.mean_square();
-  const double estimate = 0.85 * box.width() * box.height() / (std::numbers::pi * mean_square);
+  const double estimate = kEstimateFraction * box.width() * box.height() / (std::numbers::pi * mean_square);
   if (mean_square >= std::numeric_limits<double>::min() && !std::isnan(estimate)) {
     return estimate;  // E[r^2] normal: the figure is accurate (or 0, or saturated to infinity)
   }
@@ -30,13 +31,13 @@ double estimate_disks(const Box& box, const RadiusDistribution& radii) {
   if (!(scaled_mean_square > 0)) {
     return std::numeric_limits<double>::infinity();  // radii too small to square even at their scale
   }
-  const double scaled = 0.85 * (box.width() * scale.k) * (box.height() * scale.k) / (std::numbers::pi * scaled_mean_square);
+  const double scaled = kEstimateFraction * (box.width() * scale.k) * (box.height() * scale.k) / (std::numbers::pi * scaled_mean_square);
   return std::isnan(scaled) ? std::numeric_limits<double>::infinity() : scaled;
 }
 
 double bound_disks(const Box& box, double grow, const RadiusDistribution& radii) {
   const Box grown{box.xmin - grow, box.ymin - grow, box.xmax + grow, box.ymax + grow};
-  return estimate_disks(grown, radii) / 0.85;
+  return estimate_disks(grown, radii) / kEstimateFraction;
 }
 
 void throw_memory_limit(std::size_t limit, const std::string& what, std::size_t estimate) {

@@ -12,6 +12,7 @@
 #include "frontpack/io.hpp"
 #include "common/numbers.hpp"
 #include "common/read_file.hpp"
+#include "common/text.hpp"
 
 namespace frontpack {
 
@@ -19,18 +20,10 @@ namespace {
 
 using Kind = DiskFileError::Kind;
 
-bool is_blank(char c) {
-  return c == ' ' || c == '\t';
-}
+constexpr auto is_blank = detail::is_space_or_tab;
 
 std::string_view trim(std::string_view s) {
-  while (!s.empty() && is_blank(s.front())) {
-    s.remove_prefix(1);
-  }
-  while (!s.empty() && is_blank(s.back())) {
-    s.remove_suffix(1);
-  }
-  return s;
+  return detail::trim(s, is_blank);
 }
 
 // The offending text as quoted in a message: escaped (a NUL byte shows as \0) and shortened if
@@ -111,16 +104,11 @@ Disk make_disk(const Lines& lines, std::string_view x, std::string_view y, std::
 
 // Fields of a line split at `separator`, trimmed of spaces and tabs (views into the line).
 std::vector<std::string_view> split(std::string_view line, char separator) {
-  std::vector<std::string_view> fields;
-  std::size_t start = 0;
-  for (;;) {
-    const std::size_t end = line.find(separator, start);
-    fields.push_back(trim(line.substr(start, end == std::string_view::npos ? std::string_view::npos : end - start)));
-    if (end == std::string_view::npos) {
-      return fields;
-    }
-    start = end + 1;
+  std::vector<std::string_view> fields = detail::split(line, separator);
+  for (std::string_view& field : fields) {
+    field = trim(field);
   }
+  return fields;
 }
 
 // Fields of a line separated by runs of spaces and tabs.

@@ -10,6 +10,7 @@
 #include "common/format.hpp"
 #include "frontpack/output_file.hpp"
 #include "common/stop.hpp"
+#include "common/text.hpp"
 #include "frontpack/version.hpp"
 
 namespace frontpack {
@@ -39,9 +40,7 @@ const char* to_string(Format format) noexcept {
 
 Format format_from_path(const std::filesystem::path& path) {
   const std::string original = path.extension().string();
-  std::string ext = original;
-  std::transform(ext.begin(), ext.end(), ext.begin(),
-                 [](char c) { return c >= 'A' && c <= 'Z' ? static_cast<char>(c - 'A' + 'a') : c; });
+  const std::string ext = detail::ascii_lower(original);
   if (ext == ".csv") {
     return Format::csv;
   }

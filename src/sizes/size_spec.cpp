@@ -15,6 +15,7 @@
 #include "frontpack/fill.hpp"
 #include "common/numbers.hpp"
 #include "common/read_file.hpp"
+#include "common/text.hpp"
 
 namespace frontpack {
 
@@ -26,27 +27,10 @@ constexpr const char* kExpected =
     "expected uniform:RMIN,RMAX or constant:R or normal:MEAN,SD[,LO,HI] or lognormal:MEDIAN,GSD[,LO,HI] or "
     "discrete:S:F,...[@area] or discrete:FILE.csv or curve:D:P,...[@number] or curve:FILE.csv";
 
-std::string_view trim(std::string_view s) {
-  while (!s.empty() && std::isspace(static_cast<unsigned char>(s.front())) != 0) {
-    s.remove_prefix(1);
-  }
-  while (!s.empty() && std::isspace(static_cast<unsigned char>(s.back())) != 0) {
-    s.remove_suffix(1);
-  }
-  return s;
-}
+using detail::split;
 
-std::vector<std::string_view> split(std::string_view s, char sep) {
-  std::vector<std::string_view> out;
-  std::size_t start = 0;
-  while (true) {
-    const std::size_t at = s.find(sep, start);
-    out.push_back(s.substr(start, at == std::string_view::npos ? std::string_view::npos : at - start));
-    if (at == std::string_view::npos) {
-      return out;
-    }
-    start = at + 1;
-  }
+std::string_view trim(std::string_view s) {
+  return detail::trim(s, detail::is_c_space);
 }
 
 // A whole field (trimmed, a leading '+' allowed) as a double: C locale, "nan" and "inf" included
@@ -79,13 +63,7 @@ std::string in_quotes(std::string_view text, std::size_t max_chars = detail::kQu
 constexpr std::size_t kWholeSpec = 160;
 
 bool ends_with_csv(std::string_view s) {
-  if (s.size() < 4) {
-    return false;
-  }
-  std::string tail(s.substr(s.size() - 4));
-  std::transform(tail.begin(), tail.end(), tail.begin(),
-                 [](char c) { return static_cast<char>(std::tolower(static_cast<unsigned char>(c))); });
-  return tail == ".csv";
+  return s.size() >= 4 && detail::ascii_lower(s.substr(s.size() - 4)) == ".csv";
 }
 
 class SpecParser {

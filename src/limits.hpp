@@ -1,0 +1,50 @@
+// What a fill may take and how far it has come: the disk-count and memory estimates checked
+// against FillOptions::max_disks and memory_limit before the run, and the progress reported while
+// the fronts run. CGAL-free.
+#pragma once
+
+#include <cstddef>
+#include <functional>
+#include <span>
+#include <stop_token>
+
+#include "frontpack/fill.hpp"
+
+namespace frontpack::detail {
+
+struct RunBudget {
+  double estimate = 0;           ///< disks a dense packing of every polygon's box takes
+  std::size_t memory_bytes = 0;  ///< what the run may take (0: no limit), for the generators
+};
+
+/// The estimate of the disks a fill makes, and the memory it may take (options.memory_limit, or
+/// three quarters of the physical memory if 0). Throws LimitError if the estimate exceeds
+/// options.max_disks, or if its disks at peak_bytes_per_disk each exceed the memory limit.
+[[nodiscard]] RunBudget check_limits(const Domain& domain, const FillOptions& options, const RadiusDistribution& radii);
+
+/// Progress of a fill across its polygons: the area of the disks generated over the area a dense
+/// packing covers in the polygons' boxes (kEstimateFraction of it), so that the fraction reaches
+/// about 1 at the end. Holds references to `progress` and `stop`.
+class ProgressMeter {
+ public:
+  ProgressMeter(const Domain& domain, const std::function<bool(const Progress&)>& progress,
+                const std::stop_token& stop);
+
+  /// The generators' tick (FrontSettings::tick) for the next polygon: false once `stop` is
+  /// requested or the callback cancels. Empty if there is no callback and no stop is possible.
+  [[nodiscard]] std::function<bool(std::size_t, double)> tick() const;
+
+  /// The disks a polygon's run appended, once it has returned.
+  void polygon_done(std::span<const Disk> disks);
+
+  /// Reports the end: fraction 1, `generated` disks.
+  void finish(std::size_t generated) const;
+
+ private:
+  const std::function<bool(const Progress&)>& progress_;
+  const std::stop_token& stop_;
+  double to_cover_ = 0;        // the area the front is expected to cover
+  double covered_before_ = 0;  // by the disks of the polygons done
+};
+
+}  // namespace frontpack::detail

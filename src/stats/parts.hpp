@@ -1,0 +1,52 @@
+// The parts of measure() (include/frontpack/stats.hpp), one file each: stratified sampling of the
+// fractions (sampling.cpp), contacts (contacts.cpp), size statistics (sizes.cpp, histogram.cpp).
+#pragma once
+
+#include <cmath>
+#include <cstddef>
+#include <span>
+#include <stop_token>
+#include <vector>
+
+#include "domain/edge_distance.hpp"
+#include "frontpack/stats.hpp"
+
+namespace frontpack::detail {
+
+// A length scale (a power of two) that brings lengths of the order of `length` to about 1 when
+// they are so small or so large that their squares leave the range of doubles; 1 otherwise (so
+// that ordinary figures are the ones computed without it, bit for bit).
+inline double square_safe_scale(double length) noexcept {
+  if (!(length > 0) || !std::isfinite(length) || (length >= 0x1p-400 && length <= 0x1p400)) {
+    return 1;
+  }
+  return std::ldexp(1.0, -std::clamp(std::ilogb(length), -1000, 1000));
+}
+
+// The area weight of radius x, r^2 at a scale k from square_safe_scale() (the weights are only
+// ever compared with or divided by one another).
+inline double weight(double x, double k) noexcept {
+  const double y = x * k;
+  return y * y;
+}
+
+/// Disk-disk contacts within `tol`: s.contacts, s.overlaps, s.max_overlap; degree[k] counts disk
+/// k's contacts. Uses s.sizes.rmax.
+void count_contacts(std::span<const Disk> disks, double tol, PackingStats& s, std::vector<std::size_t>& degree,
+                    const std::stop_token& stop);
+
+/// Wall contacts of one disk: distinct closest points of the edges it touches within `tol`.
+std::size_t wall_contacts(const EdgeDistanceIndex& edges, const Disk& d, double tol);
+
+/// The interior and band fractions by stratified sampling of about `samples` points, the band
+/// being the points within w of the boundary.
+void sample_fractions(const Domain& domain, std::span<const Disk> disks, const EdgeDistanceIndex& edges, double w,
+                      std::size_t samples, PackingStats& s, const std::stop_token& stop);
+
+/// The radius with half of the area (sum of r^2) at or below it; sorts r. 0 for none.
+double median_by_area(std::vector<double>& r);
+
+/// Two-sample Kolmogorov-Smirnov distance by area; a and b sorted. 0 if either is empty.
+double ks_by_area(const std::vector<double>& a, const std::vector<double>& b);
+
+}  // namespace frontpack::detail

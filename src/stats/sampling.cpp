@@ -1,0 +1,122 @@
+// The interior and band fractions by stratified sampling (floating point: measurements; point
+// location in the domain is exact, via Domain).
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+
+#include "common/grid_cells.hpp"
+#include "common/rng.hpp"
+#include "common/stop.hpp"
+#include "stats/parts.hpp"
+
+namespace frontpack::detail {
+
+namespace {
+
+double unit(std::uint64_t h) noexcept {
+  return static_cast<double>(h >> 11) * 0x1p-53;
+}
+
+}  // namespace
+
+// Fractions by stratified sampling: one point per cell of an nx x ny lattice over the bounding
+// box, at a hashed position in its cell (independently in x and y, so that the estimate is a
+// stratified one, never worse than independent points). Rows of cells are swept upwards; the
+// disks meeting the row are kept in an active list (disks sorted by their lowest y).
+void sample_fractions(const Domain& domain, std::span<const Disk> disks, const EdgeDistanceIndex& edges, double w,
+                      std::size_t samples, PackingStats& s, const std::stop_token& stop) {
+  const Box b = domain.bbox();
+  const double area = b.width() * b.height();
+  if (samples == 0 || !(area > 0)) {
+    return;
+  }
+  double step = std::sqrt(area / static_cast<double>(samples));
+  if (!(step > 0)) {
+    step = std::sqrt(area) / std::sqrt(static_cast<double>(samples));  // area / samples underflowed
+  }
+  // ceil(width / step), at least 1 (and at most kMaxAxisCells).
+  const std::size_t nx = axis_cells(std::ceil(b.width() / step) - 1, kMaxAxisCells);
+  const std::size_t ny = axis_cells(std::ceil(b.height() / step) - 1, kMaxAxisCells);
+  const double sx = b.width() / static_cast<double>(nx);
+  const double sy = b.height() / static_cast<double>(ny);
+  std::vector<std::uint32_t> order(disks.size());
+  for (std::size_t k = 0; k < order.size(); ++k) {
+    order[k] = static_cast<std::uint32_t>(k);
+  }
+  std::sort(order.begin(), order.end(), [&disks](std::uint32_t p, std::uint32_t q) {
+    return disks[p].centre.y - disks[p].radius < disks[q].centre.y - disks[q].radius;
+  });
+  std::vector<std::uint32_t> active;
+  std::size_t next = 0;
+  std::vector<Point> points(nx);
+  std::vector<std::uint8_t> covered(nx);
+  std::size_t n_int = 0;
+  std::size_t c_int = 0;
+  std::size_t n_band = 0;
+  std::size_t c_band = 0;
+  for (std::size_t j = 0; j < ny; ++j) {
+    detail::throw_if_stopped(stop);
+    const double y0 = b.ymin + static_cast<double>(j) * sy;
+    const double y1 = y0 + sy;
+    for (std::size_t i = 0; i < nx; ++i) {
+      const std::uint64_t key = splitmix64(splitmix64(0x5eed0000ULL + j) ^ i);
+      points[i] = Point{b.xmin + (static_cast<double>(i) + unit(key)) * sx, y0 + unit(splitmix64(key)) * sy};
+    }
+    while (next < order.size() && disks[order[next]].centre.y - disks[order[next]].radius <= y1) {
+      active.push_back(order[next++]);
+    }
+    std::fill(covered.begin(), covered.end(), std::uint8_t{0});
+    std::size_t keep = 0;
+    for (const std::uint32_t k : active) {
+      const Disk& d = disks[k];
+      if (d.centre.y + d.radius < y0) {
+        continue;  // below this row, hence below every later one
+      }
+      active[keep++] = k;
+      const double first = std::floor((d.centre.x - d.radius - b.xmin) / sx);
+      const double last = std::floor((d.centre.x + d.radius - b.xmin) / sx);
+      if (last < 0 || first > static_cast<double>(nx - 1)) {
+        continue;
+      }
+      const auto i0 = static_cast<std::size_t>(std::max(first, 0.0));
+      const auto i1 = static_cast<std::size_t>(std::min(last, static_cast<double>(nx - 1)));
+      const double r2 = d.radius * d.radius;
+      for (std::size_t i = i0; i <= i1; ++i) {
+        const double dx = points[i].x - d.centre.x;
+        const double dy = points[i].y - d.centre.y;
+        covered[i] = static_cast<std::uint8_t>(covered[i] | (dx * dx + dy * dy <= r2 ? 1 : 0));
+      }
+    }
+    active.resize(keep);
+    for (std::size_t i = 0; i < nx; ++i) {
+      const Point p = points[i];
+      if (domain.locate(p) == Location::outside) {
+        continue;
+      }
+      if (edges.closer_than(p, w)) {
+        ++n_band;
+        c_band += covered[i];
+      } else {
+        ++n_int;
+        c_int += covered[i];
+      }
+    }
+  }
+  const double cell = sx * sy;
+  const auto fraction = [](std::size_t c, std::size_t n) {
+    return n == 0 ? 0.0 : static_cast<double>(c) / static_cast<double>(n);
+  };
+  const auto error = [](double f, std::size_t n) {
+    return n == 0 ? 0.0 : std::sqrt(std::max(f * (1 - f), 1.0 / static_cast<double>(n)) / static_cast<double>(n));
+  };
+  s.interior_samples = n_int;
+  s.band_samples = n_band;
+  s.interior_fraction = fraction(c_int, n_int);
+  s.band_fraction = fraction(c_band, n_band);
+  s.interior_error = error(s.interior_fraction, n_int);
+  s.band_error = error(s.band_fraction, n_band);
+  s.interior_area = static_cast<double>(n_int) * cell;
+  s.band_area = static_cast<double>(n_band) * cell;
+}
+
+}  // namespace frontpack::detail

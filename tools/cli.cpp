@@ -1,0 +1,119 @@
+#include "cli.hpp"
+
+#include <charconv>
+#include <string_view>
+#include <filesystem>
+#include <system_error>
+
+namespace frontpack_tool::cli {
+
+namespace {
+
+SignalWatch* g_signals = nullptr;
+
+}  // namespace
+
+void set_signal_watch(SignalWatch* watch) {
+  g_signals = watch;
+}
+
+std::stop_token stop_token() {
+  return g_signals != nullptr ? g_signals->token() : std::stop_token{};
+}
+
+std::uint64_t parse_count(const char* option, const std::string& text, std::uint64_t max) {
+  std::uint64_t value = 0;
+  const char* first = text.data();
+  const char* last = text.data() + text.size();
+  const bool digits = !text.empty() && text.find_first_not_of("0123456789") == std::string::npos;
+  const auto [end, ec] = digits ? std::from_chars(first, last, value) : std::from_chars_result{first, std::errc()};
+  const std::string range = "a whole number from 0 to " + std::to_string(max);
+  const std::string given = text.size() > 40 ? text.substr(0, 40) + "..." : text;
+  if (!digits) {
+    throw frontpack::OptionError(std::string(option) + " " + given + ": expected " + range +
+                                 (text.empty() ? "" : " (digits only)"));
+  }
+  if (ec == std::errc::result_out_of_range || end != last || value > max) {
+    throw frontpack::OptionError(std::string(option) + " " + given + ": too large; expected " + range);
+  }
+  return value;
+}
+
+void add_domain_options(CLI::App& cmd, DomainSource& src) {
+  auto* file = cmd.add_option("DOMAIN", src.file, "WKT file with a POLYGON or MULTIPOLYGON");
+  src.wkt_option = cmd.add_option("--wkt", src.wkt, "the domain as WKT text instead of a file");
+  file->excludes(src.wkt_option);
+  src.wkt_option->excludes(file);
+}
+
+frontpack::Domain load(const DomainSource& src) {
+  if (src.from_text()) {
+    if (src.wkt.find_first_not_of(" \t\r\n") == std::string::npos) {
+      throw frontpack::WktError(frontpack::WktError::Kind::empty_geometry,
+                                "the WKT text given with --wkt is empty; expected a POLYGON or MULTIPOLYGON", 0, 1, 1,
+                                "--wkt");
+    }
+    return frontpack::Domain::from_wkt(src.wkt);
+  }
+  if (src.file.empty()) {
+    throw CLI::RequiredError("DOMAIN or --wkt");
+  }
+  return frontpack::Domain::from_wkt_file(src.file);
+}
+
+std::vector<frontpack_tool::FileUse> domain_inputs(const DomainSource& src) {
+  if (src.from_text() || src.file.empty()) {
+    return {};
+  }
+  return {{"DOMAIN", src.file}};
+}
+
+std::vector<frontpack_tool::FileUse> output_uses(const std::vector<frontpack_tool::Output>& outputs,
+                                                 const std::string& json) {
+  std::vector<frontpack_tool::FileUse> uses;
+  for (const auto& o : outputs) {
+    uses.push_back({"-o", o.path});
+  }
+  if (!json.empty()) {
+    uses.push_back({"--json", json});
+  }
+  return uses;
+}
+
+int exit_code(const std::exception& e) {
+  if (dynamic_cast<const frontpack_tool::UsageError*>(&e) != nullptr) {
+    return usage;
+  }
+  if (dynamic_cast<const frontpack::IoError*>(&e) != nullptr ||
+      dynamic_cast<const std::filesystem::filesystem_error*>(&e) != nullptr) {
+    return io;
+  }
+  if (dynamic_cast<const frontpack::WktError*>(&e) != nullptr) {
+    return wkt;
+  }
+  if (dynamic_cast<const frontpack::InvalidDomainError*>(&e) != nullptr) {
+    return invalid_domain;
+  }
+  if (dynamic_cast<const frontpack::DiskFileError*>(&e) != nullptr) {
+    return bad_disk_file;
+  }
+  if (dynamic_cast<const frontpack::OptionError*>(&e) != nullptr ||
+      dynamic_cast<const frontpack::LimitError*>(&e) != nullptr) {
+    return bad_option;
+  }
+  return internal;
+}
+
+void add_curve_input(const std::string& spec, std::vector<FileUse>& inputs) {
+  constexpr std::string_view kCurve = "curve:";
+  if (spec.compare(0, kCurve.size(), kCurve) == 0) {
+    inputs.push_back({"--radius curve:FILE", spec.substr(kCurve.size())});
+  }
+}
+
+void add_packing_files(CLI::App& cmd, std::string& domain, std::string& disks, const std::string& disks_help) {
+  cmd.add_option("DOMAIN", domain, "WKT file")->required();
+  cmd.add_option("DISKS", disks, disks_help)->required();
+}
+
+}  // namespace frontpack_tool::cli

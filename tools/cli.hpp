@@ -1,0 +1,96 @@
+// The command-line tool's shared parts: exit codes, the signal watch's stop token, number
+// parsing, the domain given as a file or as --wkt, and one function per subcommand
+// (tools/commands/) that registers it and returns how to run it.
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+#include <cstdint>
+#include <exception>
+#include <functional>
+#include <stop_token>
+#include <string>
+#include <vector>
+
+#include "frontpack/frontpack.hpp"
+#include "outputs.hpp"
+#include "signals.hpp"
+
+namespace frontpack_tool::cli {
+
+enum Exit : int {
+  ok = 0,
+  usage = 1,
+  io = 2,
+  wkt = 3,
+  invalid_domain = 4,
+  bad_option = 5,
+  not_certified = 6,
+  bad_disk_file = 7,
+  nothing_fits = 8,
+  max_disks_reached = 9,
+  internal = 70,
+};
+
+constexpr const char* kExitCodes =
+    "Exit codes: 0 success, 1 usage error, 2 unreadable input or unwritable output, 3 WKT syntax or\n"
+    "unsupported geometry, 4 invalid domain, 5 invalid option (radius, method, format, width, seed,\n"
+    "limit), 6 packing not certified (check), 7 malformed disk file, 8 no disk fits (fill), 9 stopped\n"
+    "at --max-disks (fill; the partial packing is written), 70 internal error, 130/143/129 stopped\n"
+    "by SIGINT/SIGTERM/SIGHUP.\n"
+    "Outputs are written to temporary files and renamed together at the end: a failed or interrupted\n"
+    "run leaves every file as it was. /dev/stdout, devices and FIFOs are written through.";
+
+constexpr const char* kRadiusHelp =
+    "radius distribution: uniform:RMIN,RMAX | constant:R | normal:MEAN,SD[,LO,HI] | "
+    "lognormal:MEDIAN,GSD[,LO,HI] | discrete:S1:F1,S2:F2,...[@area] | curve:FILE.csv (sizes.hpp)";
+
+/// The process's signal watch (set once in main, before any other thread), and its stop token
+/// (none before it is set).
+void set_signal_watch(SignalWatch* watch);
+[[nodiscard]] std::stop_token stop_token();
+
+// A whole number for OPTION, in [0, max]: digits only (no sign, no exponent, no fraction), so
+// that "-1" or "1e23" is refused rather than wrapped or truncated. Throws OptionError naming the
+// option and the text given.
+[[nodiscard]] std::uint64_t parse_count(const char* option, const std::string& text, std::uint64_t max);
+
+struct DomainSource {
+  std::string file;
+  std::string wkt;
+  CLI::Option* wkt_option = nullptr;
+  [[nodiscard]] bool from_text() const { return wkt_option != nullptr && wkt_option->count() > 0; }
+  [[nodiscard]] std::string name() const { return from_text() ? std::string("--wkt") : file; }
+};
+
+/// DOMAIN (a file) or --wkt TEXT, each excluding the other.
+void add_domain_options(CLI::App& cmd, DomainSource& src);
+/// The domain given; throws as Domain::from_wkt(_file), or CLI::RequiredError if none is.
+[[nodiscard]] frontpack::Domain load(const DomainSource& src);
+/// The domain file as an input that no output may overwrite (none for --wkt).
+[[nodiscard]] std::vector<FileUse> domain_inputs(const DomainSource& src);
+/// The outputs and the --json file as outputs for check_files().
+[[nodiscard]] std::vector<FileUse> output_uses(const std::vector<Output>& outputs, const std::string& json);
+
+/// The file a `curve:FILE` radius spec reads, as an input that no output may overwrite.
+void add_curve_input(const std::string& spec, std::vector<FileUse>& inputs);
+
+/// DOMAIN (a WKT file) and DISKS (a disk file, described by `disks_help`), both required.
+void add_packing_files(CLI::App& cmd, std::string& domain, std::string& disks, const std::string& disks_help);
+
+/// One exit code per kind of error (see the top of tools/frontpack.cpp).
+[[nodiscard]] int exit_code(const std::exception& e);
+
+/// A subcommand: its CLI11 app, and what runs it once the command line is parsed.
+struct Command {
+  CLI::App* app;
+  std::function<int()> run;
+};
+
+Command add_info(CLI::App& app);
+Command add_fill(CLI::App& app);
+Command add_check(CLI::App& app);
+Command add_render(CLI::App& app);
+Command add_stats(CLI::App& app);
+
+}  // namespace frontpack_tool::cli

@@ -1,0 +1,267 @@
+// `frontpack fill`: fill a domain, write the packing, print the summary.
+#include <CLI/CLI.hpp>
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <cstdint>
+#include <iostream>
+#include <limits>
+#include <memory>
+#include <numbers>
+#include <sstream>
+#include <string>
+#include <system_error>
+#include <vector>
+
+#include "cli.hpp"
+#include "frontpack/frontpack.hpp"
+#include "outputs.hpp"
+#include "render.hpp"
+#include "report.hpp"
+
+namespace frontpack_tool::cli {
+
+namespace {
+
+constexpr const char* kDefaultRadius = frontpack::default_radius_spec;
+
+// --memory-limit: bytes, with an optional suffix K, M, G or T (powers of 1024: 512M, 2G); 0 leaves
+// the library's default (three quarters of the machine's memory).
+std::size_t parse_bytes(const char* option, const std::string& text) {
+  std::size_t digits = 0;
+  while (digits < text.size() && text[digits] >= '0' && text[digits] <= '9') {
+    ++digits;
+  }
+  int shift = -1;
+  if (digits == text.size()) {
+    shift = 0;
+  } else if (digits + 1 == text.size()) {
+    const std::string units = "KMGT";
+    const std::size_t u = units.find(static_cast<char>(std::toupper(static_cast<unsigned char>(text.back()))));
+    shift = u == std::string::npos ? -1 : 10 * static_cast<int>(u + 1);
+  }
+  const std::string given = text.size() > 40 ? text.substr(0, 40) + "..." : text;
+  if (digits == 0 || shift < 0) {
+    throw frontpack::OptionError(std::string(option) + " '" + given +
+                                 "': expected a number of bytes, with an optional suffix K, M, G or T (powers of "
+                                 "1024), e.g. 512M or 2G; 0 for three quarters of the machine's memory");
+  }
+  std::uint64_t value = 0;
+  const auto [end, ec] = std::from_chars(text.data(), text.data() + digits, value);
+  (void)end;
+  if (ec != std::errc{} || value > (std::numeric_limits<std::size_t>::max() >> shift)) {
+    throw frontpack::OptionError(std::string(option) + " '" + given + "': too large");
+  }
+  return static_cast<std::size_t>(value) << shift;
+}
+
+struct FillArgs {
+  DomainSource src;
+  std::string method = frontpack::to_string(frontpack::FillOptions{}.method);
+  std::string radius;  // empty: kDefaultRadius
+  std::string seed = "0";
+  std::string max_disks = std::to_string(frontpack::FillOptions{}.max_disks);
+  std::string memory_limit = "0";
+  std::vector<std::string> outputs;
+  std::string format;
+  std::string json;
+  int width = 1200;
+  bool no_histogram = false;
+  bool quiet = false;
+};
+
+frontpack::Method parse_method(const std::string& name) {
+  if (name == "closed") {
+    return frontpack::Method::closed;
+  }
+  if (name == "open") {
+    return frontpack::Method::open;
+  }
+  if (name == "boundary") {
+    return frontpack::Method::boundary;
+  }
+  throw frontpack::OptionError(std::string("--method ") + name + ": expected closed, open or boundary");
+}
+
+Json fill_json(const FillArgs& a, const std::string& spec, const frontpack::FillOptions& options,
+               const frontpack::Domain& domain, const frontpack::Packing& p, const frontpack::PackingStats& s,
+               const std::vector<frontpack_tool::Output>& outputs, double seconds_stats, double seconds_total) {
+  const frontpack::Certificate& c = p.certificate;
+  Json outs = Json::array();
+  for (const auto& o : outputs) {
+    outs.push_back(Json{{"path", o.path.string()}, {"format", frontpack_tool::format_name(o.format)}});
+  }
+  Json j{{"frontpack_version", frontpack::version_string},
+         {"command", "fill"},
+         {"domain", frontpack_tool::domain_json(a.src.name(), domain)},
+         {"method", frontpack::to_string(options.method)},
+         {"radius_spec", spec},
+         {"radius_spec_given", !a.radius.empty()},
+         {"radius_distribution", options.radii.describe()},
+         {"seed", options.seed},
+         {"disks", p.disks.size()},
+         {"truncated", p.truncated}};
+  j.update(frontpack_tool::stats_json(s));
+  j["certificate"] = Json{{"certified", true},
+                          {"generated", c.generated},
+                          {"culled", c.culled},
+                          {"dropped", c.dropped},
+                          {"candidate_pairs", c.candidate_pairs},
+                          {"exact", c.exact}};
+  j["seconds"] = Json{{"front", p.stats.seconds_front},
+                      {"cull", p.stats.seconds_cull},
+                      {"overlap_pass", p.stats.seconds_overlap},
+                      {"statistics", seconds_stats},
+                      {"total", seconds_total}};
+  j["outputs"] = outs;
+  return j;
+}
+
+// Why a fill placed no disk. A disk of radius r inside the domain lies in one polygon's bounding
+// box and has area pi r^2 at most the domain's: r <= min(sqrt(area / pi), the largest polygon box's
+// half-side), a cheap bound that is exact for rectangles and corridors.
+std::string why_no_disk(const frontpack::Domain& domain, const frontpack::FillOptions& options, const std::string& spec,
+                        std::size_t generated) {
+  double half_side = 0;
+  for (std::size_t k = 0; k < domain.num_polygons(); ++k) {
+    const frontpack::Box b = domain.bbox(k);
+    half_side = std::max(half_side, 0.5 * std::min(b.width(), b.height()));
+  }
+  const double bound = std::min(std::sqrt(domain.area() / std::numbers::pi), half_side);
+  const double rmin = options.radii.min();
+  if (rmin > bound) {
+    return "no disk fits: the smallest radius of " + spec + " is " + fmt(rmin) + ", and no disk of radius above " +
+           fmt(bound) + " fits in this domain; use smaller radii";
+  }
+  return std::string("no disk was placed: the ") + frontpack::to_string(options.method) + " form generated " +
+         std::to_string(generated) + (generated == 1 ? " disk" : " disks") +
+         " and none lay inside the domain; use smaller radii" +
+         (options.method == frontpack::Method::boundary ? "" : " or --method boundary");
+}
+
+int run_fill(const FillArgs& a) {
+  const auto t_start = Clock::now();
+  const std::string spec = a.radius.empty() ? std::string(kDefaultRadius) : a.radius;
+  frontpack::FillOptions options;
+  options.method = parse_method(a.method);
+  options.radii = frontpack::parse_radii(spec);
+  options.seed = parse_count("--seed", a.seed, std::numeric_limits<std::uint64_t>::max());
+  options.max_disks = parse_count("--max-disks", a.max_disks, std::numeric_limits<std::uint64_t>::max());
+  options.memory_limit = parse_bytes("--memory-limit", a.memory_limit);
+  options.stop = stop_token();
+  const std::vector<frontpack_tool::Output> outputs = frontpack_tool::resolve_outputs(a.outputs, a.format, false);
+  std::vector<frontpack_tool::FileUse> inputs = domain_inputs(a.src);
+  add_curve_input(spec, inputs);
+  frontpack_tool::check_files(inputs, output_uses(outputs, a.json));
+  const frontpack::Domain domain = load(a.src);
+
+  frontpack::Packing p;
+  {
+    frontpack_tool::ProgressBar bar(!a.quiet);
+    frontpack::Generator generator(domain, options);
+    generator.on_progress([&bar](const frontpack::Progress& progress) {
+      bar.update(progress);
+      return true;
+    });
+    p = generator.run();
+  }
+  if (p.disks.empty()) {
+    std::cerr << "frontpack: " << why_no_disk(domain, options, spec, p.certificate.generated) << "; nothing written\n";
+    return nothing_fits;
+  }
+
+  // Statistics only where they are shown or written.
+  const auto t_stats = Clock::now();
+  frontpack::PackingStats s;
+  if (!a.quiet || !a.json.empty()) {
+    s = frontpack::measure(domain, p.disks, {.requested = options.radii, .stop = options.stop});
+  }
+  const double seconds_stats = seconds_since(t_stats);
+
+  frontpack_tool::PendingOutputs pending;
+  const frontpack_tool::RenderOptions picture{.width_px = a.width,
+                                              .histogram = !a.no_histogram,
+                                              .requested = options.radii,
+                                              .requested_spec = spec,
+                                              .stop = options.stop};
+  for (const auto& o : outputs) {
+    pending.write(o, domain, p.disks, picture, options.stop);
+  }
+  if (!a.json.empty()) {
+    const Json j = fill_json(a, spec, options, domain, p, s, outputs, seconds_stats, seconds_since(t_start));
+    pending.write_text(a.json, j.dump(2) + "\n");
+  }
+  pending.commit_all(options.stop);
+
+  if (!a.quiet) {
+    const frontpack::Certificate& c = p.certificate;
+    const double seconds_fill = p.stats.seconds_front + p.stats.seconds_cull + p.stats.seconds_overlap;
+    std::cerr << "disks:       " << p.disks.size() << " (" << frontpack::to_string(options.method) << " form, seed "
+              << options.seed << (p.truncated ? ", truncated at --max-disks" : "") << ")\n"
+              << "radius:      " << spec << (a.radius.empty() ? " (the default; set with --radius)" : "") << "\n"
+              << "fraction:    " << frontpack_tool::fraction_line(s) << "\n"
+              << "radii:       " << frontpack_tool::radii_line(s.sizes) << "\n"
+              << "certificate: " << (c.dropped == 0 ? "certified" : "certified after repair") << ": " << c.generated
+              << " generated, " << c.culled << " culled (not inside), " << c.dropped
+              << " dropped (overlap); every decision exact\n"
+              << "time:        " << fmt(seconds_fill) << " s (front " << fmt(p.stats.seconds_front) << ", cull "
+              << fmt(p.stats.seconds_cull) << ", overlap pass " << fmt(p.stats.seconds_overlap) << "), statistics "
+              << fmt(seconds_stats) << " s\n";
+    for (const auto& o : outputs) {
+      std::cerr << "wrote:       " << o.path.string() << " (" << frontpack_tool::format_name(o.format) << ")\n";
+    }
+    if (!a.json.empty()) {
+      std::cerr << "wrote:       " << a.json << " (summary)\n";
+    }
+  }
+  if (p.truncated) {
+    std::cerr << "frontpack: stopped at --max-disks " << options.max_disks << ": the packing written ("
+              << p.disks.size() << (p.disks.size() == 1 ? " disk" : " disks")
+              << ", certified) does not fill the domain\n";
+    return max_disks_reached;
+  }
+  return ok;
+}
+
+}  // namespace
+
+Command add_fill(CLI::App& app) {
+  auto args = std::make_shared<FillArgs>();
+  CLI::App* cmd = app.add_subcommand("fill", "Fill a domain with disks (advancing front, certified exactly)");
+  add_domain_options(*cmd, args->src);
+  cmd->add_option("--method", args->method,
+                   "closed (Sec. 2), open (Sec. 3) or boundary (the domain's edges as walls)")
+      ->capture_default_str();
+  cmd->add_option("--radius", args->radius, std::string(kRadiusHelp) + " (default " + kDefaultRadius + ")");
+  cmd->add_option("--seed", args->seed, "64-bit seed, 0 to 18446744073709551615 (same seed, same packing)")
+      ->capture_default_str();
+  cmd->add_option("--max-disks", args->max_disks,
+                   "refuse runs estimated beyond this many disks, and stop a run that reaches it (exit 9)")
+      ->capture_default_str();
+  cmd->add_option("--memory-limit", args->memory_limit,
+                   "bytes a run may take, e.g. 512M or 2G (K, M, G, T: powers of 1024); refused up front or stopped "
+                   "before it would take more (exit 5); 0: three quarters of the machine's memory")
+      ->capture_default_str();
+  cmd->add_option("-o,--output", args->outputs,
+                   "output file, any number; format by extension: .csv, .txt/.yade (Yade), .data/.lmp (LAMMPS), "
+                   ".vtp (ParaView), .png/.svg/.pdf (picture)");
+  cmd->add_option("--format", args->format,
+                   "format of every -o instead of the extension: csv, yade, lammps, "
+                   "vtp, png, svg, pdf");
+  cmd->add_option("--json", args->json, "write the summary as JSON to this file");
+  cmd->add_option("--width", args->width, "picture width in pixels")->capture_default_str();
+  cmd->add_flag("--no-histogram", args->no_histogram,
+                 "pictures without the size-distribution panel (histogram by area, KS distance)");
+  cmd->add_flag("-q,--quiet", args->quiet, "print nothing but errors (no summary, no progress bar)");
+  cmd->footer(
+      "Example:\n"
+      "  frontpack fill shapes/plate_with_holes.wkt --radius uniform:0.005,0.02 --seed 7 \\\n"
+      "      -o packing.csv -o packing.data -o packing.png --json summary.json\n"
+      "Prints a summary on stderr (disks, packing fraction overall and interior, radii, certificate, time);\n"
+      "on a terminal, runs longer than half a second show a progress bar. Ctrl-C (or SIGTERM) stops the\n"
+      "run within a second (exit 130 or 143) and leaves every output file as it was.");
+  return {cmd, [args] { return run_fill(*args); }};
+}
+
+}  // namespace frontpack_tool::cli

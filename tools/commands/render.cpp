@@ -1,0 +1,91 @@
+// `frontpack render`: draw a packing (PNG, SVG, PDF).
+#include <CLI/CLI.hpp>
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <cstdint>
+#include <iostream>
+#include <limits>
+#include <memory>
+#include <numbers>
+#include <sstream>
+#include <string>
+#include <system_error>
+#include <vector>
+
+#include "cli.hpp"
+#include "frontpack/frontpack.hpp"
+#include "outputs.hpp"
+#include "render.hpp"
+#include "report.hpp"
+
+namespace frontpack_tool::cli {
+
+namespace {
+
+struct RenderArgs {
+  std::string domain;
+  std::string disks;
+  std::vector<std::string> outputs;
+  std::string format;
+  std::string radius;
+  int width = 1200;
+  bool no_histogram = false;
+  bool quiet = false;
+};
+
+int run_render(const RenderArgs& a) {
+  frontpack_tool::RenderOptions picture;
+  picture.width_px = a.width;
+  picture.histogram = !a.no_histogram;
+  if (!a.radius.empty()) {
+    picture.requested = frontpack::parse_radii(a.radius);
+    picture.requested_spec = a.radius;
+  }
+  const std::vector<frontpack_tool::Output> outputs = frontpack_tool::resolve_outputs(a.outputs, a.format, true);
+  frontpack_tool::check_files({{"DOMAIN", a.domain}, {"DISKS", a.disks}}, output_uses(outputs, {}));
+  const frontpack::Domain domain = frontpack::Domain::from_wkt_file(a.domain);
+  const std::vector<frontpack::Disk> disks = frontpack::read_disks(a.disks);
+  frontpack_tool::PendingOutputs pending;
+  for (const auto& o : outputs) {
+    pending.write(o, domain, disks, picture, stop_token());
+  }
+  pending.commit_all(stop_token());
+  if (!a.quiet) {
+    for (const auto& o : outputs) {
+      std::cerr << "wrote:       " << o.path.string() << " (" << frontpack_tool::format_name(o.format) << ", "
+                << a.width << " x " << frontpack_tool::picture_height(domain, a.width, picture.histogram) << ", "
+                << disks.size() << " disks)\n";
+    }
+  }
+  return ok;
+}
+
+}  // namespace
+
+Command add_render(CLI::App& app) {
+  auto args = std::make_shared<RenderArgs>();
+  CLI::App* cmd = app.add_subcommand("render", "Draw a packing: PNG, SVG or PDF, disks coloured by radius");
+  add_packing_files(*cmd, args->domain, args->disks, "disk file: .csv or .txt/.yade");
+  cmd->add_option("-o,--output", args->outputs, "picture file(s): .png, .svg or .pdf")->required();
+  cmd->add_option("--format", args->format, "png, svg or pdf instead of the extension");
+  cmd->add_option("--width", args->width, "width in pixels (height: the domain's, plus the histogram)")
+      ->capture_default_str();
+  cmd->add_option("--radius", args->radius,
+                     "the requested radius distribution (a --radius SPEC of fill): drawn over the histogram, "
+                     "with the KS distance by area");
+  cmd->add_flag("--no-histogram", args->no_histogram,
+                   "the packing alone, without the size-distribution panel below it");
+  cmd->add_flag("-q,--quiet", args->quiet, "print nothing but errors");
+  cmd->footer(
+      "Example:\n"
+      "  frontpack fill shapes/plate_with_holes.wkt --radius uniform:0.005,0.02 -o packing.csv\n"
+      "  frontpack render shapes/plate_with_holes.wkt packing.csv -o packing.png --width 800 \\\n"
+      "      --radius uniform:0.005,0.02\n"
+      "Below the packing, a histogram of the radii by area (bars coloured as the disks: the colour key), the\n"
+      "requested distribution's area per bin as a line and the KS distance by area; --no-histogram omits it.");
+  return {cmd, [args] { return run_render(*args); }};
+}
+
+}  // namespace frontpack_tool::cli

@@ -1,0 +1,100 @@
+// `frontpack stats`: packing statistics.
+#include <CLI/CLI.hpp>
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <cstdint>
+#include <iostream>
+#include <limits>
+#include <memory>
+#include <numbers>
+#include <sstream>
+#include <string>
+#include <system_error>
+#include <vector>
+
+#include "cli.hpp"
+#include "frontpack/frontpack.hpp"
+#include "outputs.hpp"
+#include "render.hpp"
+#include "report.hpp"
+
+namespace frontpack_tool::cli {
+
+namespace {
+
+struct StatsArgs {
+  std::string domain;
+  std::string disks;
+  std::string radius;
+  std::string json;
+  std::string samples = "1000000";
+  bool quiet = false;
+};
+
+int run_stats(const StatsArgs& a) {
+  frontpack::StatsOptions options;
+  std::vector<frontpack_tool::FileUse> inputs{{"DOMAIN", a.domain}, {"DISKS", a.disks}};
+  if (!a.radius.empty()) {
+    options.requested = frontpack::parse_radii(a.radius);
+    add_curve_input(a.radius, inputs);
+  }
+  options.samples = parse_count("--samples", a.samples, std::uint64_t{1} << 40);
+  options.stop = stop_token();
+  frontpack_tool::check_files(inputs, output_uses({}, a.json));
+  const frontpack::Domain domain = frontpack::Domain::from_wkt_file(a.domain);
+  const std::vector<frontpack::Disk> disks = frontpack::read_disks(a.disks);
+  const frontpack::PackingStats s = frontpack::measure(domain, disks, options);
+  if (!a.json.empty()) {
+    Json j{{"frontpack_version", frontpack::version_string},
+           {"command", "stats"},
+           {"domain", frontpack_tool::domain_json(a.domain, domain)},
+           {"disk_file", a.disks},
+           {"disks", s.disks}};
+    j.update(frontpack_tool::stats_json(s));
+    frontpack_tool::PendingOutputs pending;
+    pending.write_text(a.json, j.dump(2) + "\n");
+    pending.commit_all(options.stop);
+  }
+  if (a.quiet) {
+    return ok;
+  }
+  std::cout << "disks:        " << s.disks << " in " << a.disks << "\n"
+            << "fraction:     " << frontpack_tool::fraction_line(s) << "\n"
+            << "void ratio:   " << fmt(s.void_ratio) << "\n"
+            << "radii:        " << frontpack_tool::radii_line(s.sizes) << "\n";
+  if (s.sizes.compared) {
+    std::cout << "requested:    " << s.sizes.requested << "\n"
+              << "KS distance:  " << fmt4(s.sizes.ks_number) << " by number, " << fmt4(s.sizes.ks_area) << " by area\n";
+  }
+  std::cout << "coordination: " << fmt4(s.mean_coordination) << " mean, " << fmt4(s.interior_coordination)
+            << " in the interior (" << s.interior_disks << " disks); " << s.contacts << " contacts, " << s.wall_contacts
+            << " wall contacts, " << s.rattlers << " rattlers (gap <= " << fmt(s.contact_gap)
+            << " counts as contact)\n";
+  if (s.band_disks > 0 && s.band_disks < s.disks) {
+    std::cout << "segregation:  median radius by area " << fmt(s.band_median_area) << " in the band (" << s.band_disks
+              << " disks), " << fmt(s.inside_median_area) << " inside; KS by area " << fmt4(s.segregation_ks_area)
+              << "\n";
+  }
+  return ok;
+}
+
+}  // namespace
+
+Command add_stats(CLI::App& app) {
+  auto args = std::make_shared<StatsArgs>();
+  CLI::App* cmd = app.add_subcommand("stats", "Packing statistics: fractions, coordination, radii");
+  add_packing_files(*cmd, args->domain, args->disks, "disk file: .csv or .txt/.yade");
+  cmd->add_option("--radius", args->radius, "compare the radii with this requested distribution");
+  cmd->add_option("--samples", args->samples, "sample points for the interior and band fractions")
+      ->capture_default_str();
+  cmd->add_option("--json", args->json, "write the statistics as JSON to this file");
+  cmd->add_flag("-q,--quiet", args->quiet, "print nothing but errors");
+  cmd->footer(
+      "Example:\n"
+      "  frontpack stats shapes/l_shape.wkt packing.csv --radius uniform:0.01,0.05 --json stats.json");
+  return {cmd, [args] { return run_stats(*args); }};
+}
+
+}  // namespace frontpack_tool::cli
