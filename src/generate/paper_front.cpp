@@ -1,10 +1,9 @@
 // The advancing front (Feng, Han & Owen 2003, "Filling domains with disks: an advancing front
 // approach", IJNME 56:699-713). Section numbers refer to the paper; deviations say why.
 //
-// Data layout. Every placed disk is a node; in the open form nodes 0, 1, 2 are the walls Bl, Bb,
-// Br (disks of infinite radius, Sec. 3). The front is a doubly linked list of nodes (next_/prev_),
-// closed in both forms: the open form's list Bl -> ... -> Br is closed by a link Br -> Bl that is
-// never a segment. A segment is identified by its first node s (s -> next_[s]).
+// Data layout. Every placed disk is a node (nodes_, one record each, in the grid's cells); the
+// front is a doubly linked list of nodes, in the open form with the walls as nodes 0, 1, 2
+// (generate/front_list.hpp, which also keeps which segments are active).
 //
 // Overlap detection. The paper checks the new disk against at most M front disks on either side
 // of the active segment (Sec. 2.4.3), which misses overlaps with disks further along the front or
@@ -26,6 +25,7 @@
 #include "common/huge_pages.hpp"
 #include "generate/acceptance.hpp"
 #include "generate/disk_grid.hpp"
+#include "generate/front_list.hpp"
 #include "generate/scale.hpp"
 #include "generate/tangency.hpp"
 #include "generate/void_buckets.hpp"
@@ -34,12 +34,12 @@ namespace frontpack::detail {
 
 namespace {
 
-constexpr std::int32_t kNone = -1;
-constexpr std::int32_t kLeft = 0;    // Bl
-constexpr std::int32_t kBottom = 1;  // Bb
-constexpr std::int32_t kRight = 2;   // Br
-constexpr std::int32_t kFirstDisk = 3;
-constexpr double kListAspect = 4;  // see Front::link
+using paper::kBottom;
+using paper::kFirstDisk;
+using paper::kLeft;
+using paper::kNone;
+using paper::kRight;
+constexpr double kListAspect = 4;  // the list of active segments, see FrontList
 constexpr int kVoidClasses = 16;   // void buckets (log-spaced radius classes), see Front::cut
 
 template <bool Open>
@@ -68,7 +68,7 @@ class Front {
     window_ = req.window == 0 ? std::numeric_limits<std::size_t>::max() : req.window;
     const double long_side = std::max(box_.width(), box_.height());
     const double short_side = std::min(box_.width(), box_.height());
-    list_ = !Open && !(long_side <= kListAspect * short_side);  // NaN-safe: a degenerate box lists
+    const bool list = !Open && !(long_side <= kListAspect * short_side);  // NaN-safe: a degenerate box lists
     fill_voids_ = req.fill_voids;
     classes_ = RadiusClasses<kVoidClasses>(frame_.rmin, frame_.rmax);
 
@@ -104,12 +104,7 @@ class Front {
       const double expected = std::min(std::min(estimate, budget) + kFirstDisk, static_cast<double>(nodes_.capacity()));
       prefault(nodes_, expected >= 0 ? static_cast<std::size_t>(expected) : 0);
     }
-    next_.reserve(reserve + kFirstDisk);
-    prev_.reserve(reserve + kFirstDisk);
-    if (list_) {
-      anext_.reserve(reserve + kFirstDisk);
-      aprev_.reserve(reserve + kFirstDisk);
-    }
+    front_.reserve(reserve + kFirstDisk, list);
     setup_grid();
   }
 
@@ -125,12 +120,12 @@ class Front {
     }
     double r = draw();
     std::size_t skips = 0;
-    while (active_ > 0 && skips <= front_size_ + 1) {
+    while (front_.active() > 0 && skips <= front_.size() + 1) {
       if (control_.stop(placed(), area_ * frame_.unit.inv_k * frame_.unit.inv_k, result)) {
         break;
       }
-      if (!segment_active(cur)) {
-        cur = advance(cur);
+      if (!front_.segment_active(cur)) {
+        cur = front_.advance(cur);
         ++skips;
         continue;
       }
@@ -142,7 +137,7 @@ class Front {
       }
       const std::int32_t placed_node = place_on(cur, r);
       if (placed_node == kNone) {
-        cur = first_active_from(advance(retired_));  // the radius stays for the next segment
+        cur = front_.first_active_from(front_.advance(retired_));  // the radius stays for the next segment
         continue;
       }
       area_ += r * r;
@@ -150,18 +145,15 @@ class Front {
       // Visit order. Closed form (Fig. 4): after D4 on D1 -> D2, the next segment is D2 -> D3,
       // the one after the new disk's. Open form (Sec. 3): along the layer (D1 -> Bb after D1),
       // and back to Bl -> first disk once a layer reaches the right wall.
-      const std::int32_t n = next_[static_cast<std::size_t>(placed_node)];
+      const std::int32_t n = front_.next(placed_node);
       if constexpr (Open) {
         cur = n == kRight ? kLeft : placed_node;
       } else {
-        cur = first_active_from(n);
+        cur = front_.first_active_from(n);
       }
     }
     // The front and the grid are done with: free them before the output grows (peak memory).
-    release(next_);
-    release(prev_);
-    release(anext_);
-    release(aprev_);
+    front_.release();
     release(head_);
     voids_.release();
     move_out(nodes_, kFirstDisk, frame_.origin, frame_.unit.inv_k, out_);
@@ -186,12 +178,7 @@ class Front {
     const bool in =
         id >= kFirstDisk ? (x >= box_.xmin && x <= box_.xmax && y >= box_.ymin && y <= box_.ymax) : id == kBottom;
     nodes_.push_back(Node{x, y, r, link_to, static_cast<std::uint8_t>(in ? 1 : 0), 0});
-    next_.push_back(kNone);
-    prev_.push_back(kNone);
-    if (list_) {
-      anext_.push_back(kNone);
-      aprev_.push_back(kNone);
-    }
+    front_.add();
     return id;
   }
 
@@ -287,198 +274,23 @@ class Front {
     return tangent_to_disk_and_wall(dn.x, dn.y, dn.r, wl, -wl.ny, wl.nx, gap, wall_first, false, px, py);
   }
 
-  // ------------------------------------------------------------------------------------------
-  // Segments: activity (Sec. 2.3) and the front list.
-
-  [[nodiscard]] bool inside(std::int32_t id) const noexcept { return nodes_[static_cast<std::size_t>(id)].inside != 0; }
-
-  // Sec. 2.3: a segment is inactive when both its disks' centres are outside the box (open
-  // form: above the lid, Sec. 3). Inactive segments stay on the front for overlap checks.
-  [[nodiscard]] bool segment_active(std::int32_t s) const noexcept {
-    const auto i = static_cast<std::size_t>(s);
-    if (nodes_[i].blocked != 0 || (Open && s == kRight)) {
-      return false;
-    }
-    return inside(s) || inside(next_[i]);
-  }
-
-  // Activity bookkeeping. Active segments are counted; on a box more than kListAspect times
-  // longer than wide the closed form also keeps them in a circular list in front order
-  // (anext_/aprev_), so that its sweep goes from one active segment to the next without stepping
-  // over the inactive ones: there most of the closed front runs outside the box, and stepping
-  // over it on every lap made the sweep cost disks x aspect ratio. The visit order is the same
-  // either way (the next active segment in front order), so the list changes no packing; it is
-  // left out elsewhere because it costs about 8% on square boxes, where the steps it saves are
-  // few.
-  void unlink_segment(std::int32_t s) {
-    if (!list_) {
-      active_ -= segment_active(s) ? 1U : 0U;
-    } else if (listed(s)) {
-      list_remove(s);
-    }
-  }
-  void link(std::int32_t s, std::int32_t t) {
-    join(s, t);
-    if (!list_) {
-      active_ += segment_active(s) ? 1U : 0U;
-    } else {
-      relist(s);
-    }
-  }
-
-  // The front pointers of link(), without the activity bookkeeping.
-  void join(std::int32_t s, std::int32_t t) {
-    next_[static_cast<std::size_t>(s)] = t;
-    prev_[static_cast<std::size_t>(t)] = s;
-    nodes_[static_cast<std::size_t>(s)].blocked = 0;
-  }
-
-  [[nodiscard]] bool listed(std::int32_t s) const noexcept { return anext_[static_cast<std::size_t>(s)] != kNone; }
-
-  void list_remove(std::int32_t s) {
-    const auto i = static_cast<std::size_t>(s);
-    const std::int32_t a = aprev_[i];
-    const std::int32_t b = anext_[i];
-    anext_[static_cast<std::size_t>(a)] = b;
-    aprev_[static_cast<std::size_t>(b)] = a;
-    anext_[i] = aprev_[i] = kNone;
-    --active_;
-  }
-
-  void list_insert_after(std::int32_t a, std::int32_t s) {
-    const std::int32_t b = anext_[static_cast<std::size_t>(a)];
-    anext_[static_cast<std::size_t>(a)] = s;
-    aprev_[static_cast<std::size_t>(s)] = a;
-    anext_[static_cast<std::size_t>(s)] = b;
-    aprev_[static_cast<std::size_t>(b)] = s;
-    ++active_;
-  }
-
-  // Makes segment s's membership of the list agree with its activity. A listed segment keeps its
-  // place (s's position in the front does not change); a new one goes next to the nearest listed
-  // segment, before it if it lies ahead, after it if behind.
-  //
-  // Anchors. The walk to the nearest listed segment is short only if one is near. On a sliver's
-  // box the front is two long inactive strands joined by short active ends, and an end often has
-  // a single listed segment: when a cut or a placement unlisted it and a new segment was listed
-  // there just after, the walk went along a whole strand to the other end (quadratic: 182 s for
-  // a 1 x 1e-6 rectangle, 2 s now). So within one place_on() a segment that goes inactive but marks the
-  // place of the action stays listed, as an anchor (stale_), and place_on() unlists the anchors
-  // still inactive before it returns. The list is the same at every return: each segment enters
-  // at its place in front order, and the list holds the active segments in front order.
-  void relist(std::int32_t s) {
-    const bool active = segment_active(s);
-    if (active == listed(s)) {
-      return;
-    }
-    if (!active) {
-      list_remove(s);
-      return;
-    }
-    const Listed near = nearest_listed(s);
-    if (near.node != kNone) {
-      list_insert_after(near.ahead ? aprev_[static_cast<std::size_t>(near.node)] : near.node, s);
-      return;
-    }
-    anext_[static_cast<std::size_t>(s)] = aprev_[static_cast<std::size_t>(s)] = s;  // the only one
-    ++active_;
-  }
-
-  // The listed segment nearest to x along the front (x excluded), looking both ways at once, and
-  // whether it lies ahead of x; kNone if there is none. One or two steps in practice: a segment
-  // becomes active, or the sweep lands, next to active segments. (A kNone link, as for a new disk
-  // whose second link is not made yet, ends the walk that way.)
-  struct Listed {
-    std::int32_t node;
-    bool ahead;
-  };
-  [[nodiscard]] Listed nearest_listed(std::int32_t x) const noexcept {
-    std::int32_t back = prev_[static_cast<std::size_t>(x)];
-    std::int32_t ahead = next_[static_cast<std::size_t>(x)];
-    for (std::size_t steps = 0; steps <= front_size_; ++steps) {
-      if (ahead != kNone && ahead != x) {
-        if (listed(ahead)) {
-          return {ahead, true};
-        }
-        ahead = next_[static_cast<std::size_t>(ahead)];
-      }
-      if (back != kNone && back != x) {
-        if (listed(back)) {
-          return {back, false};
-        }
-        back = prev_[static_cast<std::size_t>(back)];
-      }
-    }
-    return {kNone, false};
-  }
-
-  // The first active segment at or after x in front order: the one the sweep visits next (with
-  // the list; without it the main loop steps there).
-  [[nodiscard]] std::int32_t first_active_from(std::int32_t x) const noexcept {
-    if (!list_ || listed(x)) {
-      return x;
-    }
-    const Listed near = nearest_listed(x);
-    if (near.node == kNone) {
-      return x;  // nothing is active: the main loop ends
-    }
-    return near.ahead ? near.node : anext_[static_cast<std::size_t>(near.node)];
-  }
-
-  [[nodiscard]] std::int32_t advance(std::int32_t s) const noexcept {
-    const std::int32_t n = next_[static_cast<std::size_t>(s)];
-    return Open && n == kRight ? kLeft : n;
-  }
-
   // Removes the front nodes first..last (in list order) and joins their neighbours.
   void cut(std::int32_t first, std::int32_t last) {
-    const std::int32_t before = prev_[static_cast<std::size_t>(first)];
-    const std::int32_t after = next_[static_cast<std::size_t>(last)];
-    if (!list_) {
-      unlink_segment(before);  // the list keeps `before` in place: link() relists it
-    }
     if (fill_voids_) {
       // The segments cut off enclose a void between the disks removed from the front and the
       // disk about to be placed; later, smaller disks may fit there (Sec. 2.4.4's hole filling,
       // but with other disks than the one that cut).
-      keep_void(before, kVoidClasses - 1);
-      for (std::int32_t v = first; v != last; v = next_[static_cast<std::size_t>(v)]) {
+      keep_void(front_.prev(first), kVoidClasses - 1);
+      for (std::int32_t v = first; v != last; v = front_.next(v)) {
         keep_void(v, kVoidClasses - 1);
       }
       keep_void(last, kVoidClasses - 1);
     }
-    if (list_ && !listed(before)) {
-      // The first listed segment cut off leaves its place to `before`, an anchor at least.
-      for (std::int32_t v = first;; v = next_[static_cast<std::size_t>(v)]) {
-        if (listed(v)) {
-          list_insert_after(aprev_[static_cast<std::size_t>(v)], before);
-          break;
-        }
-        if (v == last) {
-          break;
-        }
-      }
-    }
-    for (std::int32_t v = first;; v = next_[static_cast<std::size_t>(v)]) {
-      unlink_segment(v);
-      --front_size_;
-      if (v == last) {
-        break;
-      }
-    }
-    if (list_ && listed(before)) {
-      join(before, after);
-      if (!segment_active(before)) {
-        stale_.push_back(before);  // an anchor until place_on() returns
-      }
-      return;
-    }
-    link(before, after);
+    front_.remove(first, last);
   }
 
   void block(std::int32_t s) {
-    unlink_segment(s);
-    nodes_[static_cast<std::size_t>(s)].blocked = 1;
+    front_.retire(s);
     ++stats_.blocked_segments;
   }
 
@@ -511,14 +323,14 @@ class Front {
   // (Sec. 2.4.2: what lies beyond is on the other side of the active segment).
   std::int32_t first_overlap(std::int32_t from, bool forward, std::int32_t stop, std::int32_t also_stop, double acc,
                              bool angles, const Probe& p) {
-    const std::int32_t* const step = forward ? next_.data() : prev_.data();
+    const std::int32_t* const step = front_.links(forward);
     const std::int32_t end_wall = forward ? kRight : kLeft;
     const std::size_t window = window_;
     std::size_t steps = 0;
     for (std::int32_t v = from; v != stop && v != also_stop && steps < window; ++steps) {
       const auto vi = static_cast<std::size_t>(v);
       if (angles) {
-        acc += forward ? angle(prev_[vi], v) : angle(v, next_[vi]);
+        acc += forward ? angle(front_.prev(v), v) : angle(v, front_.next(v));
         if (acc > std::numbers::pi) {
           break;
         }
@@ -543,35 +355,19 @@ class Front {
   // Case (a): accept; the front becomes ... c -> i -> n ...
   std::int32_t accept(std::int32_t c, std::int32_t n, double px, double py, double r) {
     const std::int32_t i = add_node(px, py, r);
-    ++front_size_;
-    if (!list_) {
-      unlink_segment(c);
-      link(c, i);
-      link(i, n);
-      return i;
-    }
-    // i is listed next to c (listed, or an anchor) before c is relisted.
-    join(c, i);
-    join(i, n);
-    relist(i);
-    relist(c);
+    front_.insert(c, i, n);
     return i;
   }
 
-  // place_on_front(), then the anchors left inactive leave the list (see relist()).
+  // place_on_front(), then the anchors left inactive leave the list (FrontList::relist()).
   std::int32_t place_on(std::int32_t c, double r) {
     const std::int32_t placed_node = place_on_front(c, r);
-    for (const std::int32_t s : stale_) {
-      if (listed(s) && !segment_active(s)) {
-        list_remove(s);
-      }
-    }
-    stale_.clear();
+    front_.drop_anchors();
     return placed_node;
   }
 
   std::int32_t place_on_front(std::int32_t c, double r) {
-    std::int32_t n = next_[static_cast<std::size_t>(c)];
+    std::int32_t n = front_.next(c);
     for (;;) {
       ++stats_.attempts;
       double px = 0;
@@ -588,8 +384,8 @@ class Front {
       // the scan comes before the window walks, which only choose what to cut. The disks next to
       // the segment, the most likely to be in the way, are tried before the scan. The packing is
       // the one of walks first, scan second (same decisions; 11-13% fewer instructions).
-      const std::int32_t nn = can_forward ? next_[static_cast<std::size_t>(n)] : kNone;
-      const std::int32_t pc = can_backward ? prev_[static_cast<std::size_t>(c)] : kNone;
+      const std::int32_t nn = can_forward ? front_.next(n) : kNone;
+      const std::int32_t pc = can_backward ? front_.prev(c) : kNone;
       const bool nn_hit = nn != kNone && nn != c && overlaps_node(cand, nn);
       const bool near = nn_hit || (pc != kNone && pc != n && overlaps_node(cand, pc));
       if (!near && !overlaps_anything(cand, c, n)) {
@@ -610,7 +406,7 @@ class Front {
         j = first_overlap(nn, true, c, kNone, angles ? angle(c, n) : 0, angles, cand);
       }
       if (can_backward) {
-        u = first_overlap(prev_[static_cast<std::size_t>(c)], false, n, j, 0, angles, cand);
+        u = first_overlap(front_.prev(c), false, n, j, 0, angles, cand);
       }
       if (j == kNone && u == kNone) {
         // Every overlapped disk is off the window or enclosed by the front: the paper's window
@@ -624,11 +420,11 @@ class Front {
       // k is the disk before j, v the disk after u; in case (d) j is the subsequent and u the
       // preceding disk. The walks never return c or n, so each cut removes at least one disk.
       if (j != kNone) {
-        cut(n, prev_[static_cast<std::size_t>(j)]);  // case (b): delete n..k, join c -> j
+        cut(n, front_.prev(j));  // case (b): delete n..k, join c -> j
         n = j;
       }
       if (u != kNone) {
-        cut(next_[static_cast<std::size_t>(u)], c);  // case (c): delete v..c, join u -> n
+        cut(front_.next(u), c);  // case (c): delete v..c, join u -> n
         c = u;
       }
       // Case (d) is both of the above. Retry on the intermediate segment c -> n.
@@ -647,9 +443,9 @@ class Front {
 
   [[nodiscard]] int void_class(double r) const noexcept { return classes_.of(r); }
 
-  // Keeps segment s -> next_[s] as a void of class k.
+  // Keeps segment s -> next(s) as a void of class k.
   void keep_void(std::int32_t s, int k) {
-    const std::int32_t t = next_[static_cast<std::size_t>(s)];
+    const std::int32_t t = front_.next(s);
     if (k <= 0 || t == kNone || (Open && s == kRight)) {
       return;
     }
@@ -702,22 +498,15 @@ class Front {
       return kNone;
     }
     const std::int32_t d3 = add_node(px, py, r3);
-    front_size_ = 3;
     ox_ = (nodes_[3].x + nodes_[4].x + nodes_[5].x) / 3;
     oy_ = (nodes_[3].y + nodes_[4].y + nodes_[5].y) / 3;
-    link(d1, d2);
-    link(d2, d3);
-    link(d3, d1);
+    front_.start_closed(d1, d2, d3);
     return d1;
   }
 
   // Sec. 3: the open front Bl -> Bb -> Br; the first active segment Bl -> Bb.
   std::int32_t start_open() {
-    front_size_ = 3;
-    next_[kRight] = kLeft;  // closes the list; Br -> Bl is never a segment
-    prev_[kLeft] = kRight;
-    link(kLeft, kBottom);
-    link(kBottom, kRight);
+    front_.start_open();
     return kLeft;
   }
 
@@ -739,12 +528,7 @@ class Front {
 
   // Not HugeVector (common/huge_pages.hpp): these fronts read near the front only.
   std::vector<Node> nodes_;
-  std::vector<std::int32_t> next_, prev_;
-  bool list_ = false;                        // keep the list below (closed form, elongated box)
-  std::vector<std::int32_t> anext_, aprev_;  // the active segments, in front order
-  std::vector<std::int32_t> stale_;          // inactive segments listed as anchors (relist())
-  std::size_t active_ = 0;
-  std::size_t front_size_ = 0;
+  paper::FrontList<Open, Node> front_{nodes_};
   std::int32_t retired_ = kNone;  // place_on()'s retired segment
 
   CellGrid grid_;

@@ -4,33 +4,29 @@
 // (b)-(d) of Sec. 2.2 are decided by geometry (a move to touch the element in the way); the voids
 // the front leaves (Sec. 2.2's holes) take later, smaller disks, bucketed by the Apollonius
 // pocket each can hold. Element ids: a node (disk or reflex vertex) is >= 0, wall e is -(e + 1).
+// This file is the driver: the gaps and voids, and a try at a gap (cases (a)-(d)). Where the front
+// starts: seeding.hpp; the elements and the positions touching two of them: elements.hpp; what a
+// candidate runs into: obstacles.hpp; what a void can still take: pocket.hpp.
 // The method, what it guarantees and where it deviates from the paper, and why:
 // docs/boundary-method.md. Its density: docs/density.md; its cost: docs/performance.md.
 #include "generate/boundary/boundary_front.hpp"
 
-#include "generate/boundary/pocket.hpp"
-#include "generate/boundary/wall_index.hpp"
-#include "generate/boundary/walls.hpp"
-
 #include <algorithm>
 #include <array>
-#include <bit>
 #include <cmath>
 #include <cstdint>
-#include <limits>
 #include <numbers>
-#include <numeric>
-#include <string>
-#include <tuple>
-#include <type_traits>
+#include <optional>
 #include <utility>
 
-#include "common/huge_pages.hpp"
 #include "generate/acceptance.hpp"
-#include "generate/disk_grid.hpp"
+#include "generate/boundary/elements.hpp"
+#include "generate/boundary/obstacles.hpp"
+#include "generate/boundary/pocket.hpp"
+#include "generate/boundary/seeding.hpp"
+#include "generate/boundary/wall_index.hpp"
+#include "generate/boundary/walls.hpp"
 #include "generate/run_control.hpp"
-#include "generate/scale.hpp"
-#include "generate/tangency.hpp"
 #include "generate/void_buckets.hpp"
 
 namespace frontpack::detail {
@@ -56,55 +52,40 @@ constexpr int kMoves = 0;
 constexpr int kWallCut = 1;
 constexpr int kWallMoves = 3;
 constexpr int kVoidMoves = 3;
-constexpr std::uint32_t kWallList = 16;  // a cell with more walls than this asks the wall tree
 
 class BoundaryFront {
-  struct Node {
-    double x, y, r;
-    std::int32_t cell_next;
-    std::int32_t after;  // the second element of the last front gap with this disk first (overtaker())
-  };
-  struct Gap {
-    std::int32_t a, b;
-    // A void's third element, the one that bounds it (keep_void()): a disk that a and b touch
-    // no larger than the pocket between the three clears it. kNone on the front, and for a void
-    // kept without one.
-    std::int32_t bound = kNone;
-  };
-
  public:
   BoundaryFront(const FrontSettings& req, const Polygon& polygon, Rng& rng, std::vector<Disk>& out, FillStats& stats)
       : req_(req),
-        polygon_(polygon),
         rng_(rng),
         out_(out),
         stats_(stats),
         control_(req.max_disks, req.tick),
         out_before_(out.size()),
         frame_(*req.radii, req.clearance, outer_box(polygon)),
-        overlap_(frame_.clearance, stats) {
+        elements_(frame_),
+        obstacles_(frame_, stats) {
     box_ = Box{-frame_.clearance, -frame_.clearance, frame_.width + frame_.clearance, frame_.height + frame_.clearance};
     classes_ = RadiusClasses<kClasses>(frame_.rmin, frame_.rmax);
 
-    estimate_ = estimate_disks(outer_box(polygon), *req.radii);
+    const double estimate = estimate_disks(outer_box(polygon), *req.radii);
     // (Every disk lies in the polygon: at most its box's area, bound_disks(), 1.18 estimates.)
-    const auto reserve = count_of(estimate_ * 1.3 + 64, 1e9);
-    nodes_.reserve(reserve);
-    before_.reserve(reserve);
-    setup_walls();
-    setup_grid();
-    for (const Wall& w : walls_) {
-      polygon_area_ += (w.ax * w.by - w.bx * w.ay) / 2;  // holes (clockwise) subtract
+    elements_.reserve(count_of(estimate * 1.3 + 64, 1e9));
+    Seeding seeding = seed_at_corners(polygon, frame_);
+    ring_first_ = std::move(seeding.ring_first);
+    rough_ = std::move(seeding.rough);
+    any_rough_ = seeding.any_rough;
+    polygon_area_ = seeding.area;
+    elements_.set_boundary(std::move(seeding.walls), std::move(seeding.corners), seeding.corner_at);
+    for (const Gap& g : seeding.gaps) {
+      push_gap(g);
     }
-  }
-
-  // The polygon's bounding box (its outer ring's).
-  static Box outer_box(const Polygon& polygon) noexcept {
-    Box box;
-    for (const Point& p : polygon.outer) {
-      box.extend(p);
+    const SetupBudget budget{req_.memory_limit, estimate};
+    fixed_bytes_ = obstacles_.set_up(elements_.walls(), frame_, budget);
+    if (req_.memory_limit != 0) {
+      budget.check(fixed_bytes_, "the grid and the lists of the walls near its cells");
+      control_.limit_memory(req_.memory_limit - fixed_bytes_);
     }
-    return box;
   }
 
   FrontResult run() {
@@ -171,17 +152,16 @@ class BoundaryFront {
     for (auto& side : voids_) {
       side.release();
     }
-    release(before_);
-    release(head_cell_);
-    index_.release();
-    move_out(nodes_, corners_.size(), frame_.origin, frame_.unit.inv_k, out_);
+    elements_.release_links();
+    obstacles_.release();
+    elements_.move_out(frame_.origin, frame_.unit.inv_k, out_);
     result.fixed_bytes = fixed_bytes_;
     return result;
   }
 
  private:
   [[nodiscard]] std::size_t placed() const noexcept {
-    return nodes_.size() - static_cast<std::size_t>(corner_count_) + out_before_;
+    return elements_.size() - static_cast<std::size_t>(elements_.corner_count()) + out_before_;
   }
   // Whether front gap g has been overtaken: a later gap paired its first disk with another second
   // element, or its second disk with another first one. Mostly a disk placed since then touching
@@ -197,26 +177,19 @@ class BoundaryFront {
   // kNone if g is still on the front. (Neither link is ever kNone once g was queued: pushing g
   // set both.)
   [[nodiscard]] std::int32_t overtaker(Gap g) const noexcept {
-    if (is_disk(g.a) && nodes_[static_cast<std::size_t>(g.a)].after != g.b) {
-      return nodes_[static_cast<std::size_t>(g.a)].after;
+    if (is_disk(g.a) && elements_.after(g.a) != g.b) {
+      return elements_.after(g.a);
     }
-    if (is_disk(g.b) && before_[static_cast<std::size_t>(g.b)] != g.a) {
-      return before_[static_cast<std::size_t>(g.b)];
+    if (is_disk(g.b) && elements_.before(g.b) != g.a) {
+      return elements_.before(g.b);
     }
     return kNone;
   }
   [[nodiscard]] bool fifo_empty() const noexcept { return head_ == fifo_.size() && wall_head_ == wall_fifo_.size(); }
-  [[nodiscard]] bool on_wall(std::int32_t e) const noexcept { return e < corner_count_; }  // a wall or a corner
+  [[nodiscard]] bool on_wall(std::int32_t e) const noexcept { return elements_.on_wall(e); }  // a wall or a corner
   // Records gap g as the last one with its first disk first and its second disk second
   // (overtaker()).
-  void link(Gap g) noexcept {
-    if (is_disk(g.a)) {
-      nodes_[static_cast<std::size_t>(g.a)].after = g.b;
-    }
-    if (is_disk(g.b)) {
-      before_[static_cast<std::size_t>(g.b)] = g.a;
-    }
-  }
+  void link(Gap g) noexcept { elements_.link(g.a, g.b); }
   void push_gap(Gap g) {
     link(g);
     if (on_wall(g.a) || on_wall(g.b)) {
@@ -225,426 +198,27 @@ class BoundaryFront {
       fifo_.push_back(g);
     }
   }
-  [[nodiscard]] static bool is_wall(std::int32_t e) noexcept { return e < 0; }
-  // Against a copy of corners_.size() (the vector's size is a subtraction and a shift; with it,
-  // these tests were 7% of the front's instructions on a 67k-disk square, under callgrind).
-  [[nodiscard]] bool is_disk(std::int32_t e) const noexcept { return e >= corner_count_; }
-  [[nodiscard]] bool is_corner(std::int32_t e) const noexcept {
-    return static_cast<std::uint32_t>(e) < static_cast<std::uint32_t>(corner_count_);
-  }
+  [[nodiscard]] static bool is_wall(std::int32_t e) noexcept { return Elements::is_wall(e); }
+  [[nodiscard]] bool is_disk(std::int32_t e) const noexcept { return elements_.is_disk(e); }
   [[nodiscard]] int class_of(double r) const noexcept { return classes_.of(r); }
   double draw() { return frame_.draw(rng_); }
 
   // ------------------------------------------------------------------------------------------
-  // Walls, reflex vertices and the initial gaps.
+  // The elements (elements.hpp) and what is in a candidate's way (obstacles.hpp).
 
-  void setup_walls() {
-    auto add_ring = [&](const Ring& ring) {
-      const std::size_t n = ring.size();
-      const auto first = static_cast<std::int32_t>(walls_.size());
-      for (std::size_t i = 0; i < n; ++i) {
-        const Point a = local(ring[i]);
-        const Point b = local(ring[(i + 1) % n]);
-        walls_.push_back(make_wall(a.x, a.y, b.x, b.y));
-      }
-      // Corner at vertex i + 1, between wall i (in) and wall i + 1 (out). The front starts at
-      // every corner sharper than kSlideTurn; along gentler ones the wall layer slides from one
-      // wall to the next (slide()), so a finely divided curve is not started at each of its
-      // vertices (the ring's sharpest vertex starts it if none is sharp).
-      ring_first_.push_back(static_cast<std::size_t>(first));
-      rough_.resize(walls_.size(), 0);
-      std::size_t sharpest = 0;
-      double sharpest_turn = -1;
-      bool started = false;
-      auto start_at = [&](std::size_t i, bool convex, std::int32_t v) {
-        const std::int32_t in = -(first + static_cast<std::int32_t>(i) + 1);
-        const std::int32_t out = -(first + static_cast<std::int32_t>((i + 1) % n) + 1);
-        if (convex) {
-          push_gap(Gap{in, out});
-        } else {
-          push_gap(Gap{in, v});
-          push_gap(Gap{v, out});
-        }
-        started = true;
-      };
-      std::vector<std::int32_t> vertex(n, kNone);  // the reflex vertex's node, per vertex
-      for (std::size_t i = 0; i < n; ++i) {
-        const Wall& wi = walls_[static_cast<std::size_t>(first) + i];
-        const Wall& wo = walls_[static_cast<std::size_t>(first) + (i + 1) % n];
-        const double cross = wi.tx * wo.ty - wi.ty * wo.tx;  // > 0: left turn, a convex corner
-        const double dot = wi.tx * wo.tx + wi.ty * wo.ty;    // the cosine of the turn
-        // A key that grows with the turn over [0, pi] (its sine, then 2 minus it), from * and -
-        // alone: with std::atan2, whose last bit differs between C libraries, the vertex that
-        // starts a ring without a corner could too.
-        const double turn = dot > 0 ? std::abs(cross) : 2 - std::abs(cross);
-        const bool sharp = dot <= kCosSlideTurn;  // turns by kSlideTurn or more
-        const bool convex = cross > 1e-12;
-        if (!convex) {
-          vertex[i] = static_cast<std::int32_t>(corners_.size());
-          corners_.push_back(Corner{wi.tx, wi.ty, wo.tx, wo.ty});
-          corner_count_ = static_cast<std::int32_t>(corners_.size());
-          corner_at_.push_back(Point{wi.bx, wi.by});
-        }
-        if (sharp && wi.len < 2 * frame_.rmax) {
-          rough_[static_cast<std::size_t>(first) + i] = 1;
-        }
-        if (sharp && wo.len < 2 * frame_.rmax) {
-          rough_[static_cast<std::size_t>(first) + (i + 1) % n] = 1;
-        }
-        if (turn > sharpest_turn) {
-          sharpest_turn = turn;
-          sharpest = i;
-        }
-        if (sharp) {
-          start_at(i, convex, vertex[i]);
-        }
-      }
-      if (!started && n > 0) {
-        const Wall& wi = walls_[static_cast<std::size_t>(first) + sharpest];
-        const Wall& wo = walls_[static_cast<std::size_t>(first) + (sharpest + 1) % n];
-        start_at(sharpest, wi.tx * wo.ty - wi.ty * wo.tx > 1e-12, vertex[sharpest]);
-      }
-    };
-    add_ring(polygon_.outer);
-    for (const Ring& hole : polygon_.holes) {
-      add_ring(hole);
-    }
-    any_rough_ = std::find(rough_.begin(), rough_.end(), 1) != rough_.end();
-  }
-
-  [[nodiscard]] Point local(Point p) const noexcept { return frame_.local(p); }
-
-  // ------------------------------------------------------------------------------------------
-  // The grid: placed disks in linked cells (reflex vertices are nodes, but not in the cells: see
-  // below); per cell, the walls within reach of it (a disk of radius <= rmax centred in the cell
-  // can only cross those).
-
-  void setup_grid() {
-    grid_ = CellGrid(0, 0, frame_.width, frame_.height, frame_.rmax);
-    probes_inside_ = frame_.clearance < frame_.rmax && !grid_.coarse;
-    // The memory limit (FrontSettings::memory_limit) counts what is built here: the cell heads
-    // (4 bytes a cell) and 12 bytes a block of cells; the (cell, wall) pairs, 16 bytes each while
-    // they are listed (8, and as much again while the list moves or is copied grouped), then 12
-    // (the grouped copy and the lists kept) with 1,028 bytes a walled block; then
-    // peak_bytes_per_disk per disk. On a sliver 1e-7 high these lists, sized by the grid's cells
-    // and not by the disks, were most of the run's memory (565 MB for 1.1M disks).
-    const SetupBudget budget{req_.memory_limit, estimate_};
-    const std::size_t need = grid_.cells() * sizeof(std::int32_t) + WallIndex::block_bytes(grid_);
-    budget.check(need, "the grid over the polygon's box has " + std::to_string(grid_.cells()) + " cells");
-    head_cell_.assign(grid_.cells(), kNone);
-
-    // The reflex vertices are nodes (elements a disk can touch) but stay out of the cells: as
-    // obstacles their walls cover them. A disk closer to a vertex than its radius (plus the margin)
-    // is as close to the walls that end there, which are in the cell's list or found by the tree,
-    // and at least as deep in them, and the walls are tried first; so no scan returned one on 5
-    // shapes, and on the rough ring `big_polygon` they were most of the disks each scan near the
-    // boundary tested. (Up to rounding: within a few ulps of the threshold the vertex was decided
-    // exactly and the wall in floating point, and a review's simulation found probes, 0.1-0.4% of
-    // those placed there on purpose, that only the vertex stopped; each stayed at least 0.999 of
-    // the margin, half the clearance, from the boundary, which is what the wall test guarantees
-    // everywhere else, and the certifier decides containment exactly.)
-    for (std::size_t v = 0; v < corners_.size(); ++v) {
-      nodes_.push_back(Node{corner_at_[v].x, corner_at_[v].y, 0, kNone, kNone});
-      before_.push_back(kNone);
-    }
-
-    // Walls per cell: those meeting the cell grown by rmax + the clearance (wall_index.cpp).
-    const double reach = (frame_.rmax + frame_.clearance) * (1 + 1e-9) + 4 * frame_.clearance;
-    index_.build(walls_, grid_, reach, need, budget);
-    // What stays for the run; the disks have the rest of the limit.
-    fixed_bytes_ = head_cell_.size() * sizeof(std::uint32_t) + index_.bytes();
-    if (req_.memory_limit != 0) {
-      budget.check(fixed_bytes_, "the grid and the lists of the walls near its cells");
-      control_.limit_memory(req_.memory_limit - fixed_bytes_);
-    }
-  }
-
-  [[nodiscard]] std::int64_t col(double x) const noexcept { return grid_.col(x); }
-  [[nodiscard]] std::int64_t row(double y) const noexcept { return grid_.row(y); }
-  // col() and row() for a candidate that passed the box test (try_gap(), fits()): inside the
-  // polygon's box grown by the clearance, so that, with a clearance below rmax, everything within
-  // its reach (r + rmax and a clearance or two) lies in the grid's margin of 4 rmax, and its cells
-  // need no clamping (the same cells, in fewer instructions: the clamps were 6% of the front's).
-  // (Not for the one cell of a grid whose margin could not be 4 rmax.)
-  [[nodiscard]] std::int64_t probe_col(double x) const noexcept {
-    return probes_inside_ ? grid_.col_inside(x) : grid_.col(x);
-  }
-  [[nodiscard]] std::int64_t probe_row(double y) const noexcept {
-    return probes_inside_ ? grid_.row_inside(y) : grid_.row(y);
-  }
-  [[nodiscard]] std::size_t probe_cell(double x, double y) const noexcept {
-    return static_cast<std::size_t>(probe_row(y)) * grid_.nx + static_cast<std::size_t>(probe_col(x));
-  }
-
+  // A new disk at (x, y), a candidate that passed the box test.
   std::int32_t add_node(double x, double y, double r) {
-    const auto id = static_cast<std::int32_t>(nodes_.size());
-    const std::size_t c = probe_cell(x, y);
-    nodes_.push_back(Node{x, y, r, head_cell_[c], kNone});
-    before_.push_back(kNone);
-    head_cell_[c] = id;
-    return id;
+    const auto id = static_cast<std::int32_t>(elements_.size());
+    return elements_.add_disk(x, y, r, obstacles_.enter(id, x, y));
   }
-
-  // ------------------------------------------------------------------------------------------
-  // Tangent positions: a disk of radius r touching elements a and b (at the clearance), on the
-  // left of a -> b. False if there is none.
-
+  [[nodiscard]] Probe probe(double x, double y, double r) const noexcept { return obstacles_.probe(x, y, r); }
   bool tangent(std::int32_t a, std::int32_t b, double r, double& px, double& py) const noexcept {
-    const double g = r + frame_.clearance;
-    if (!is_wall(a) && !is_wall(b)) {
-      const Node& an = nodes_[static_cast<std::size_t>(a)];
-      const Node& bn = nodes_[static_cast<std::size_t>(b)];
-      return tangent_to_two(an.x, an.y, an.r + g, bn.x, bn.y, bn.r + g, /*left=*/true, frame_.scale, px, py);
-    }
-    if (is_wall(a) && is_wall(b)) {
-      return tangent_to_two_walls(walls_[wall_index(a)], walls_[wall_index(b)], g, px, py);
-    }
-    // A wall and a node: before the node along the wall if the wall comes first, after it
-    // otherwise. A reflex vertex at the wall's end lies on its line.
-    const bool wall_first = is_wall(a);
-    const Wall& wl = walls_[wall_index(wall_first ? a : b)];
-    const std::int32_t d = wall_first ? b : a;
-    const Node& dn = nodes_[static_cast<std::size_t>(d)];
-    return tangent_to_disk_and_wall(dn.x, dn.y, dn.r, wl, wl.tx, wl.ty, g, !wall_first, ends(wl, d), px, py);
-  }
-
-  // ------------------------------------------------------------------------------------------
-  // Overlap tests.
-
-  [[nodiscard]] Probe probe(double x, double y, double r) const noexcept { return overlap_.probe(x, y, r); }
-  // How far the candidate comes into disk o (acceptance.hpp): > 0 if it overlaps.
-  double depth(const Probe& p, const Node& o) { return overlap_.depth(p, o); }
-
-  // The element the candidate overlaps most deeply (a disk or a wall; a reflex vertex is no
-  // deeper than the walls that end there, up to rounding: setup_grid()), or kNone.
-  // Its parents need no skipping: it touches them at the full clearance, outside the band (at
-  // most 3/4 of the clearance) in which depth() and the wall test can see an overlap.
-  // With Any, the first element found that the candidate overlaps: for callers that only need to
-  // know whether there is one (most candidates that get this far overlap something, and the scan
-  // ends there). With `quick`, the gap whose candidate this is, and no wall in the way, the disks
-  // in_the_way() tries are asked first, and the first of them in the way is returned: for a gap
-  // whose try fails on any disk (no move, which only a wall in the way would start).
-  template <bool Any = false>
-  std::int32_t deepest(const Probe& p, const Gap* quick = nullptr) {
-    std::int32_t best = kNone;
-    double best_depth = 0;
-    const auto home_col = static_cast<std::size_t>(probe_col(p.x));
-    const auto home_row = static_cast<std::size_t>(probe_row(p.y));
-    const double reach = p.r + overlap_.margin();
-    const auto [first_wall, end_wall] = index_.near_cell(home_row, home_col);
-    if (end_wall == first_wall) {
-      // No walls within reach.
-    } else if (end_wall - first_wall > kWallList) {
-      // A finely divided boundary: the nearest wall, from the tree, is the deepest one.
-      double d2 = reach * reach;
-      const std::int32_t e = index_.nearest(p.x, p.y, d2);
-      if (e != kNone) {
-        if constexpr (Any) {
-          return e;
-        }
-        best = e;
-        best_depth = reach - std::sqrt(d2);
-      }
-    } else {
-      for (std::uint32_t k = first_wall; k < end_wall; ++k) {
-        const std::int32_t e = index_.id(k);
-        const Wall& wl = walls_[wall_index(e)];
-        const double d2 = distance2(wl, p.x, p.y);
-        if (d2 < reach * reach) {
-          if constexpr (Any) {
-            return e;
-          }
-          const double dd = reach - std::sqrt(d2);
-          if (best == kNone || dd > best_depth) {
-            best = e;
-            best_depth = dd;
-          }
-        }
-      }
-    }
-    if (quick != nullptr && best == kNone) {
-      if (const std::int32_t e = in_the_way(quick->a, quick->b, p, home_row * grid_.nx + home_col); e != kNone) {
-        return e;
-      }
-    }
-    const double r_reach = (p.r_hi + frame_.rmax) * (1 + 1e-9);  // depth() can say yes up to r_hi + o.r
-    const std::int64_t c0 = probe_col(p.x - r_reach);
-    const std::int64_t c1 = probe_col(p.x + r_reach);
-    const std::int64_t r0 = probe_row(p.y - r_reach);
-    const std::int64_t r1 = probe_row(p.y + r_reach);
-    visit_cells(head_cell_.data(), grid_.nx, nodes_.data(), kNone, c0, c1, r0, r1, [&](std::int32_t d, const Node& o) {
-      const double dd = depth(p, o);
-      // Of two disks in the way as deep, the older: exact ties are the rule in the band where
-      // the exact predicate decides (depth_exact() says only whether), and the first in the
-      // order of the scan would depend on the size of the grid's cells.
-      if (dd > 0 && (Any || best == kNone || dd > best_depth || (dd == best_depth && d < best))) {
-        best = d;
-        best_depth = dd;
-      }
-      return Any && dd > 0;
-    });
-    return best;
-  }
-
-  // A disk in the way of the candidate for gap (x, y) among those most often there, or kNone: the
-  // gap's neighbours on the front (the first element of the last gap with x second, the second of
-  // the last with y first) and the disks of the candidate's own cell. Most tries fail (on the 1M
-  // square, 64% of front gaps and 31% of voids), and 56% of the failures are settled here, for a
-  // node or two and one cell head instead of a scan of some 18 cells and 8 disks (front 8-13%
-  // faster, docs/performance.md).
-  // Whatever is found is in the way, so the try fails exactly when the scan would have made it
-  // fail; but it is not always the deepest element, and the void the gap leaves is bounded by
-  // the pocket this one leaves (a bound all the same), so packings differ from the scan's.
-  std::int32_t in_the_way(std::int32_t x, std::int32_t y, const Probe& p, std::size_t home) {
-    const std::int32_t before = is_disk(x) ? before_[static_cast<std::size_t>(x)] : kNone;
-    if (is_disk(before) && depth(p, nodes_[static_cast<std::size_t>(before)]) > 0) {
-      return before;
-    }
-    const std::int32_t after = is_disk(y) ? nodes_[static_cast<std::size_t>(y)].after : kNone;
-    if (is_disk(after) && depth(p, nodes_[static_cast<std::size_t>(after)]) > 0) {
-      return after;
-    }
-    for (std::int32_t e = head_cell_[home]; e != kNone; e = nodes_[static_cast<std::size_t>(e)].cell_next) {
-      if (depth(p, nodes_[static_cast<std::size_t>(e)]) > 0) {
-        return e;
-      }
-    }
-    return kNone;
-  }
-
-  // Whether the candidate really touches parent e where it should: its foot on a wall lies on the
-  // edge, and it is not in the outside wedge of a reflex vertex (there it would be outside the
-  // domain, touching the corner from without).
-  [[nodiscard]] bool supported_by(std::int32_t e, double px, double py) const noexcept {
-    if (is_wall(e)) {
-      const Wall& wl = walls_[wall_index(e)];
-      const double u = (px - wl.ax) * wl.tx + (py - wl.ay) * wl.ty;
-      return u >= -frame_.clearance && u <= wl.len + frame_.clearance;
-    }
-    if (is_corner(e)) {
-      const Corner& c = corners_[static_cast<std::size_t>(e)];
-      const Node& v = nodes_[static_cast<std::size_t>(e)];
-      const double dx = px - v.x;
-      const double dy = py - v.y;
-      const bool right_of_in = c.ux1 * dy - c.uy1 * dx < 0;
-      const bool right_of_out = c.ux2 * dy - c.uy2 * dx < 0;
-      return !(right_of_in && right_of_out);
-    }
-    return true;
-  }
-
-  // ------------------------------------------------------------------------------------------
-  // The void a failed gap leaves: the radius of the circle touching nodes a, b and d from
-  // outside, on the left of a -> b (Apollonius' problem; a, b, d disks or reflex vertices), or -1
-  // if there is none or it is not computed (a wall among them, centres collinear). A disk touching
-  // a and b no larger than that clears d: it is the most the gap can take with d in the way.
-  [[nodiscard]] double pocket(std::int32_t a, std::int32_t b, std::int32_t d) const noexcept {
-    if (d == kNone) {
-      return -1;
-    }
-    const int walls = (is_wall(a) ? 1 : 0) + (is_wall(b) ? 1 : 0) + (is_wall(d) ? 1 : 0);
-    if (walls == 1) {
-      return pocket_at_wall(a, b, d);
-    }
-    if (walls == 2) {
-      return pocket_at_walls(a, b, d);
-    }
-    if (walls != 0) {
-      return -1;
-    }
-    const Node& na = nodes_[static_cast<std::size_t>(a)];
-    const Node& nb = nodes_[static_cast<std::size_t>(b)];
-    const Node& nd = nodes_[static_cast<std::size_t>(d)];
-    return pocket_of_nodes<double>(na.x, na.y, na.r, nb.x, nb.y, nb.r, nd.x, nd.y, nd.r, frame_.scale);
-  }
-
-  // pocket(x, n, d) and pocket(n, y, d) for disks x, n, y and a node d that is no wall: the two
-  // pockets a disk n placed in void (x, y) bounded by d leaves. In the lanes of a vector, in two
-  // thirds of the instructions of two calls and with their two long chains of dependent
-  // operations as one; the same bits (a lane that the vector leaves undecided, NaN, is computed
-  // alone).
-  [[nodiscard]] std::array<double, 2> pocket_pair(std::int32_t x, std::int32_t n, std::int32_t y,
-                                                  std::int32_t d) const noexcept {
-    const Node& a = nodes_[static_cast<std::size_t>(x)];
-    const Node& m = nodes_[static_cast<std::size_t>(n)];
-    const Node& b = nodes_[static_cast<std::size_t>(y)];
-    const Node& o = nodes_[static_cast<std::size_t>(d)];
-    const V2 rho = pocket_of_nodes<V2>(V2{a.x, m.x}, V2{a.y, m.y}, V2{a.r, m.r}, V2{m.x, b.x}, V2{m.y, b.y},
-                                       V2{m.r, b.r}, lanes<V2>(o.x), lanes<V2>(o.y), lanes<V2>(o.r), frame_.scale);
-    std::array<double, 2> caps{rho[0], rho[1]};
-    if (x == d) {
-      caps[0] = -1;
-    } else if (std::isnan(caps[0])) [[unlikely]] {
-      caps[0] = pocket(x, n, d);
-    }
-    if (y == d) {
-      caps[1] = -1;
-    } else if (std::isnan(caps[1])) [[unlikely]] {
-      caps[1] = pocket(n, y, d);
-    }
-    return caps;
-  }
-
-  // pocket() with one wall among the three: the circle of radius rho at distance rho from the
-  // wall's line (inside) touching the two nodes from outside; the smallest such rho.
-  [[nodiscard]] double pocket_at_wall(std::int32_t a, std::int32_t b, std::int32_t d) const noexcept {
-    std::int32_t w = a;
-    std::int32_t i = b;
-    std::int32_t j = d;
-    if (is_wall(b)) {
-      w = b;
-      i = a;
-    } else if (is_wall(d)) {
-      w = d;
-      i = a;
-      j = b;
-    }
-    const Wall& wl = walls_[wall_index(w)];
-    if (ends(wl, j)) {
-      std::swap(i, j);
-    }
-    const Node& ni = nodes_[static_cast<std::size_t>(i)];
-    const Node& nj = nodes_[static_cast<std::size_t>(j)];
-    if (ends(wl, i)) {
-      return ends(wl, j) ? -1 : pocket_at_wall_end(wl, ni, nj);
-    }
-    return pocket_at_line(wl, ni, nj);
-  }
-
-  // Whether node e is a reflex vertex at an end of wall wl (node coordinates and wall ends come
-  // from the same ring points, so equality is exact).
-  [[nodiscard]] bool ends(const Wall& wl, std::int32_t e) const noexcept {
-    if (!is_corner(e)) {
-      return false;
-    }
-    const Node& v = nodes_[static_cast<std::size_t>(e)];
-    return (v.x == wl.ax && v.y == wl.ay) || (v.x == wl.bx && v.y == wl.by);
-  }
-
-  // pocket() with two walls among the three (a crevice of a rough boundary, or a corner with a disk
-  // in the way): the circle of radius rho at distance rho from both walls' lines (inside) touching
-  // the node from outside; the smallest such rho. Its centre moves along a line as rho grows. The
-  // walls are segments: where the circle's foot on a wall's line falls off the segment, a vertex
-  // and not the line bounds the pocket, and none is computed (-1).
-  [[nodiscard]] double pocket_at_walls(std::int32_t a, std::int32_t b, std::int32_t d) const noexcept {
-    std::int32_t w1 = a;
-    std::int32_t w2 = b;
-    std::int32_t i = d;
-    if (!is_wall(a)) {
-      w1 = d;
-      i = a;
-    } else if (!is_wall(b)) {
-      w2 = d;
-      i = b;
-    }
-    const Wall& p = walls_[wall_index(w1)];
-    const Wall& q = walls_[wall_index(w2)];
-    return pocket_at_two_walls(p, q, nodes_[static_cast<std::size_t>(i)]);
+    return elements_.tangent(a, b, r, px, py);
   }
 
   // Keeps gap g as a void for radii below class k, and below the pocket left by `blocker`.
   void push_void(Gap g, int k, std::int32_t blocker) {
-    keep_void(g, k, blocker, blocker != kNone ? pocket(g.a, g.b, blocker) : -1);
+    keep_void(g, k, blocker, blocker != kNone ? pocket(elements_, g.a, g.b, blocker) : -1);
   }
   // push_void() with the pocket `cap` already computed (-1: none).
   void keep_void(Gap g, int k, std::int32_t blocker, double cap) {
@@ -662,11 +236,10 @@ class BoundaryFront {
 
   // ------------------------------------------------------------------------------------------
   // Seeds: two touching disks (r and a second drawn radius) at a point inside the polygon where
-  // they fit, with the gaps on both sides of the pair. Tried only while the disks cover less than
-  // half of what a dense packing would, at most kSeeds times, each at up to kSeedTries points
-  // drawn in the polygon's box. Returns whether the pair was placed.
+  // they fit (seed_pair_at()), with the gaps on both sides of the pair. Tried only while the disks
+  // cover less than half of what a dense packing would, at most kSeeds times. Returns whether the
+  // pair was placed.
   static constexpr int kSeeds = 16;
-  static constexpr int kSeedTries = 256;
 
   bool seed(double r) {
     if (seeds_ >= kSeeds || std::numbers::pi * area_ >= 0.5 * 0.82 * polygon_area_) {
@@ -674,35 +247,16 @@ class BoundaryFront {
     }
     ++seeds_;
     const double r2 = draw();
-    for (int t = 0; t < kSeedTries; ++t) {
-      const double sx = frame_.width * rng_.uniform();
-      const double sy = frame_.height * rng_.uniform();
-      const double tx = sx + r + r2 + frame_.clearance;
-      if (!index_.inside(sx, sy) || !fits(sx, sy, r) || !fits(tx, sy, r2)) {
-        continue;
-      }
-      // The pair apart by the clearance, as tangent disks are (this cannot fail; checked before
-      // the first disk is placed, so that nothing is left behind if it did).
-      if (depth(probe(tx, sy, r2), Node{sx, sy, r, kNone, 0}) > 0) {
-        continue;
-      }
-      const std::int32_t a = add_node(sx, sy, r);
-      const std::int32_t b = add_node(tx, sy, r2);
-      area_ += r2 * r2;
-      push_gap(Gap{a, b});
-      push_gap(Gap{b, a});
-      return true;
-    }
-    return false;
-  }
-
-  // Whether a disk at (x, y) of radius r crosses no wall and overlaps no disk (with its centre
-  // inside the polygon, it then lies inside).
-  bool fits(double x, double y, double r) {
-    if (!(x - r >= 0 && x + r <= frame_.width && y - r >= 0 && y + r <= frame_.height)) {
+    const std::optional<Point> at = seed_pair_at(obstacles_, elements_, frame_, rng_, r, r2);
+    if (!at) {
       return false;
     }
-    return deepest<true>(probe(x, y, r)) == kNone;
+    const std::int32_t a = add_node(at->x, at->y, r);
+    const std::int32_t b = add_node(at->x + r + r2 + frame_.clearance, at->y, r2);
+    area_ += r2 * r2;
+    push_gap(Gap{a, b});
+    push_gap(Gap{b, a});
+    return true;
   }
 
   // ------------------------------------------------------------------------------------------
@@ -727,16 +281,16 @@ class BoundaryFront {
       }
       const bool wall_first = is_wall(x);
       const std::int32_t w = wall_first ? x : y;
-      if (supported_by(w, px, py)) {
+      if (elements_.supported_by(w, px, py)) {
         return;
       }
-      double d2 = distance2(walls_[wall_index(w)], px, py);
-      const std::int32_t e = index_.nearest(px, py, d2, w);
+      double d2 = distance2(elements_.wall(w), px, py);
+      const std::int32_t e = obstacles_.nearest(px, py, d2, w);
       if (e == kNone || e == w || ring_of(e) != ring_of(w)) {
         return;
       }
-      const Wall& a = walls_[wall_index(w)];
-      const Wall& b = walls_[wall_index(e)];
+      const Wall& a = elements_.wall(w);
+      const Wall& b = elements_.wall(e);
       if (a.tx * b.tx + a.ty * b.ty < kCosSlideTurn) {
         return;
       }
@@ -756,8 +310,8 @@ class BoundaryFront {
   // replaced; their pocket rarely takes a disk, and beyond 4 rmin almost never: on the 3 x 3
   // square such voids were tried 178k times for 3k disks (1 in 67k beyond 8 rmin).
   [[nodiscard]] bool worth_a_void(std::int32_t x, std::int32_t y) const noexcept {
-    const Node& a = nodes_[static_cast<std::size_t>(x)];
-    const Node& b = nodes_[static_cast<std::size_t>(y)];
+    const BoundaryNode& a = elements_.node(x);
+    const BoundaryNode& b = elements_.node(y);
     const double dx = a.x - b.x;
     const double dy = a.y - b.y;
     const double reach = a.r + b.r + 4 * frame_.rmin;
@@ -799,16 +353,17 @@ class BoundaryFront {
       // In the interior, the disks most often in the way are tried before the scan (in_the_way()).
       const Gap first{x, y};
       const std::int32_t d =
-          move == moves && move > 0 ? deepest<true>(p) : deepest(p, move == 0 && !walled ? &first : nullptr);
+          move == moves && move > 0 ? obstacles_.deepest<true>(elements_, p)
+                                    : obstacles_.deepest(elements_, p, move == 0 && !walled ? &first : nullptr);
       if (d == kNone) {
-        if (!supported_by(x, px, py) || !supported_by(y, px, py)) {
+        if (!elements_.supported_by(x, px, py) || !elements_.supported_by(y, px, py)) {
           return result;
         }
         // Touching a disk, a candidate that crosses no wall is inside: the two disks cover the
         // segment between their centres. Touching only walls and reflex vertices, it can lie
         // wholly outside where the domain is thinner than the clearance (a spike two edges a few
         // ulps apart): its centre must then be inside.
-        if (!is_disk(x) && !is_disk(y) && !index_.inside(px, py)) {
+        if (!is_disk(x) && !is_disk(y) && !obstacles_.inside(px, py)) {
           return result;
         }
         queue_around(g, x, y, add_node(px, py, r), replaced, in_void, walled);
@@ -843,8 +398,9 @@ class BoundaryFront {
       // Both pockets first, in one computation (pocket_pair()).
       const std::array<Gap, 2> split{Gap{x, n}, Gap{n, y}};
       const std::array<double, 2> caps = is_wall(g.bound)
-                                             ? std::array<double, 2>{pocket(x, n, g.bound), pocket(n, y, g.bound)}
-                                             : pocket_pair(x, n, y, g.bound);
+                                             ? std::array<double, 2>{pocket(elements_, x, n, g.bound),
+                                                                     pocket(elements_, n, y, g.bound)}
+                                             : pocket_pair(elements_, x, n, y, g.bound);
       for (std::size_t i = 0; i < 2; ++i) {
         if (caps[i] >= 0 && caps[i] < frame_.rmax) {
           link(split[i]);
@@ -911,28 +467,20 @@ class BoundaryFront {
   }
 
   const FrontSettings& req_;
-  const Polygon& polygon_;
   Rng& rng_;
   std::vector<Disk>& out_;
   FillStats& stats_;
   RunControl control_;
   std::size_t out_before_;  // out_.size() until the run moves the nodes out (placed())
   RunFrame frame_;
-  OverlapTest overlap_;
   RadiusClasses<kClasses> classes_;
-  Box box_;              // the polygon's box (local coordinates) grown by the clearance
-  double estimate_ = 0;  // of the disks the box takes (estimate_disks())
+  Box box_;                      // the polygon's box (local coordinates) grown by the clearance
   std::size_t fixed_bytes_ = 0;  // the grid's and the wall lists', for the memory limit
   double area_ = 0;
   double polygon_area_ = 0;  // shoelace, for the seeding rule
   int seeds_ = 0;
 
-  std::vector<Wall> walls_;
-  std::vector<Corner> corners_;    // node i < corners_.size() is reflex vertex i (radius 0)
-  std::int32_t corner_count_ = 0;  // corners_.size()
-  std::vector<Point> corner_at_;
-  HugeVector<Node> nodes_;
-  HugeVector<std::int32_t> before_;  // per disk: the first element of the last front gap with it second
+  Elements elements_;  // walls, reflex vertices, disks
 
   std::vector<Gap> fifo_;
   std::vector<Gap> wall_fifo_;  // gaps on a wall or a reflex vertex (grows with the perimeter only)
@@ -940,10 +488,7 @@ class BoundaryFront {
   std::size_t head_ = 0;
   std::array<VoidBuckets<Gap, kClasses>, 2> voids_;  // [1]: on a rough wall
 
-  CellGrid grid_;
-  bool probes_inside_ = false;  // probe_col(), probe_row(): no clamping needed
-  HugeVector<std::int32_t> head_cell_;
-  WallIndex index_;
+  Obstacles obstacles_;  // the grid and the wall lists
   std::vector<std::size_t> ring_first_;  // the first wall of each ring
   std::vector<std::uint8_t> rough_;
   bool any_rough_ = false;  // a rough wall exists (else no void is kept on side 1)

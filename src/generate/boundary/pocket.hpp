@@ -1,15 +1,20 @@
 // The Apollonius pockets of the boundary front's voids: the largest circle that touches three
 // elements (disks, reflex vertices or walls) from outside, which bounds the disks a void can still
 // take (Sec. 2.2's holes, bucketed by what they hold). Two pockets at once in the lanes of a
-// vector, from the same templated source as the scalar ones, so with the same bits. Header-only
-// and CGAL-free: computed for every failed try at a gap.
+// vector, from the same templated source as the scalar ones, so with the same bits; then the
+// pocket of three elements given by their ids (elements.hpp), which picks the solver for the walls
+// among them. Header-only and CGAL-free: computed for every failed try at a gap.
 #pragma once
 
+#include <array>
 #include <bit>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <type_traits>
+#include <utility>
 
+#include "generate/boundary/elements.hpp"
 #include "generate/boundary/walls.hpp"
 #include "generate/scale.hpp"
 
@@ -167,7 +172,7 @@ inline double pocket_at_line(const Wall& wl, const Node& ni, const Node& nj) noe
 
 // pocket() of two walls' lines and a node: the circle of radius rho at distance rho from both
 // lines (inside) touching the node from outside; the smallest such rho, or -1 (see
-// BoundaryFront::pocket_at_walls()).
+// pocket_at_walls()).
 template <class Node>
 inline double pocket_at_two_walls(const Wall& p, const Wall& q, const Node& ni) noexcept {
   // n1 . c = w1 + rho, n2 . c = w2 + rho: c = X + rho V.
@@ -199,6 +204,105 @@ inline double pocket_at_two_walls(const Wall& p, const Wall& q, const Node& ni) 
     }
   }
   return rho;
+}
+
+// ------------------------------------------------------------------------------------------
+// The pockets of elements, by their ids (elements.hpp).
+
+// pocket() with one wall among the three: the circle of radius rho at distance rho from the
+// wall's line (inside) touching the two nodes from outside; the smallest such rho.
+[[nodiscard]] inline double pocket_at_wall(const Elements& el, std::int32_t a, std::int32_t b, std::int32_t d) noexcept {
+  std::int32_t w = a;
+  std::int32_t i = b;
+  std::int32_t j = d;
+  if (Elements::is_wall(b)) {
+    w = b;
+    i = a;
+  } else if (Elements::is_wall(d)) {
+    w = d;
+    i = a;
+    j = b;
+  }
+  const Wall& wl = el.wall(w);
+  if (el.ends(wl, j)) {
+    std::swap(i, j);
+  }
+  const BoundaryNode& ni = el.node(i);
+  const BoundaryNode& nj = el.node(j);
+  if (el.ends(wl, i)) {
+    return el.ends(wl, j) ? -1 : pocket_at_wall_end(wl, ni, nj);
+  }
+  return pocket_at_line(wl, ni, nj);
+}
+
+// pocket() with two walls among the three (a crevice of a rough boundary, or a corner with a disk
+// in the way): the circle of radius rho at distance rho from both walls' lines (inside) touching
+// the node from outside; the smallest such rho. Its centre moves along a line as rho grows. The
+// walls are segments: where the circle's foot on a wall's line falls off the segment, a vertex
+// and not the line bounds the pocket, and none is computed (-1).
+[[nodiscard]] inline double pocket_at_walls(const Elements& el, std::int32_t a, std::int32_t b, std::int32_t d) noexcept {
+  std::int32_t w1 = a;
+  std::int32_t w2 = b;
+  std::int32_t i = d;
+  if (!Elements::is_wall(a)) {
+    w1 = d;
+    i = a;
+  } else if (!Elements::is_wall(b)) {
+    w2 = d;
+    i = b;
+  }
+  return pocket_at_two_walls(el.wall(w1), el.wall(w2), el.node(i));
+}
+
+// The void a failed gap leaves: the radius of the circle touching elements a, b and d from
+// outside, on the left of a -> b (Apollonius' problem; a, b, d disks or reflex vertices), or -1
+// if there is none or it is not computed (a wall among them, centres collinear). A disk touching
+// a and b no larger than that clears d: it is the most the gap can take with d in the way.
+[[nodiscard]] inline double pocket(const Elements& el, std::int32_t a, std::int32_t b, std::int32_t d) noexcept {
+  if (d == kNoElement) {
+    return -1;
+  }
+  const int walls = (Elements::is_wall(a) ? 1 : 0) + (Elements::is_wall(b) ? 1 : 0) + (Elements::is_wall(d) ? 1 : 0);
+  if (walls == 1) {
+    return pocket_at_wall(el, a, b, d);
+  }
+  if (walls == 2) {
+    return pocket_at_walls(el, a, b, d);
+  }
+  if (walls != 0) {
+    return -1;
+  }
+  const BoundaryNode& na = el.node(a);
+  const BoundaryNode& nb = el.node(b);
+  const BoundaryNode& nd = el.node(d);
+  return pocket_of_nodes<double>(na.x, na.y, na.r, nb.x, nb.y, nb.r, nd.x, nd.y, nd.r, el.scale());
+}
+
+// pocket(x, n, d) and pocket(n, y, d) for disks x, n, y and a node d that is no wall: the two
+// pockets a disk n placed in void (x, y) bounded by d leaves. In the lanes of a vector, in two
+// thirds of the instructions of two calls and with their two long chains of dependent
+// operations as one; the same bits (a lane that the vector leaves undecided, NaN, is computed
+// alone).
+[[nodiscard]] inline std::array<double, 2> pocket_pair(const Elements& el, std::int32_t x, std::int32_t n,
+                                                       std::int32_t y, std::int32_t d) noexcept {
+  const BoundaryNode& a = el.node(x);
+  const BoundaryNode& m = el.node(n);
+  const BoundaryNode& b = el.node(y);
+  const BoundaryNode& o = el.node(d);
+  const V2 rho = pocket_of_nodes<V2>(V2{a.x, m.x}, V2{a.y, m.y}, V2{a.r, m.r}, V2{m.x, b.x}, V2{m.y, b.y},
+                                     V2{m.r, b.r}, lanes<V2>(o.x), lanes<V2>(o.y), lanes<V2>(o.r), el.scale());
+  std::array<double, 2> caps{rho[0], rho[1]};
+  if (x == d) {
+    caps[0] = -1;
+  } else if (std::isnan(caps[0])) [[unlikely]] {
+    caps[0] = pocket(el, x, n, d);
+  }
+  if (y == d) {
+    caps[1] = -1;
+  } else if (std::isnan(caps[1])) [[unlikely]] {
+    caps[1] = pocket(el, n, y, d);
+  }
+  return caps;
 }
 
 }  // namespace frontpack::detail
