@@ -256,7 +256,7 @@ BENCHMARK(BM_CostRatio)
 // A sliver: the rectangle L x 1e-6 (L = 1: 1:1e6), radii uniform in [2e-7, 4.5e-7], so that one
 // to two disks fit across it. The closed form's box is thin: its front becomes two long inactive
 // strands outside the box joined by two short active ends, and looking up the list of active
-// segments walked a strand whenever an end lost its last listed segment (src/generate/paper_front.cpp, relist()):
+// segments walked a strand whenever an end lost its last listed segment (src/generate/front_list.hpp, relist()):
 // 182 s for L = 1, now about 2 s; the time must grow linearly with L. Manual time: the front.
 // Arguments: method, L in thousandths.
 //   build/release/bench/frontpack_bench_fill --benchmark_filter=Sliver/

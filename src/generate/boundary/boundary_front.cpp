@@ -19,6 +19,7 @@
 #include <optional>
 #include <utility>
 
+#include "common/packing_density.hpp"
 #include "generate/acceptance.hpp"
 #include "generate/boundary/elements.hpp"
 #include "generate/boundary/obstacles.hpp"
@@ -242,7 +243,7 @@ class BoundaryFront {
   static constexpr int kSeeds = 16;
 
   bool seed(double r) {
-    if (seeds_ >= kSeeds || std::numbers::pi * area_ >= 0.5 * 0.82 * polygon_area_) {
+    if (seeds_ >= kSeeds || std::numbers::pi * area_ >= 0.5 * kRandomDenseFraction * polygon_area_) {
       return false;
     }
     ++seeds_;
