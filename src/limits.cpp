@@ -46,12 +46,12 @@ RunBudget check_limits(const Domain& domain, const FillOptions& options, const R
     estimate += estimate_disks(domain.bbox(p), radii);
   }
   // Saturated: an estimate can exceed every integer (1e600 disks for radii of 1e-300).
-  const std::size_t count = estimate >= 0 && estimate < 0x1p63 ? static_cast<std::size_t>(estimate)
-                                                                : std::numeric_limits<std::size_t>::max();
+  const std::size_t count =
+      estimate >= 0 && estimate < 0x1p63 ? static_cast<std::size_t>(estimate) : std::numeric_limits<std::size_t>::max();
   // Written so that a NaN fails the checks (estimate_disks() gives none; a check must not rely on it).
   if (!(estimate <= static_cast<double>(options.max_disks))) {
-    throw LimitError("the request would generate about " + format_count(estimate) + " disks, more than max_disks = " +
-                         std::to_string(options.max_disks) +
+    throw LimitError("the request would generate about " + format_count(estimate) +
+                         " disks, more than max_disks = " + std::to_string(options.max_disks) +
                          "; use larger radii or raise max_disks (frontpack fill --max-disks)",
                      count);
   }

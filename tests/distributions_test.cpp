@@ -417,16 +417,17 @@ TEST(ParseRadii, Errors) {
             "radius 'normal:1.7e308,1e307': normal: the default upper bound MEAN + 3 SD (MEAN '1.7e308', SD '1e307') "
             "overflows to infinity; give the bounds: normal:MEAN,SD,LO,HI");
   // Numbers out of the range of doubles (the same rule and words as every reader).
-  EXPECT_EQ(msg("constant:1e-400"), "radius 'constant:1e-400': '1e-400' is out of the range of a double (underflows to 0)");
+  EXPECT_EQ(msg("constant:1e-400"),
+            "radius 'constant:1e-400': '1e-400' is out of the range of a double (underflows to 0)");
   EXPECT_EQ(msg("uniform:0.01, 1e400"),
             "radius 'uniform:0.01, 1e400': '1e400' is out of the range of a double (overflows to infinity)");
   EXPECT_EQ(msg("discrete:1:0.5,2e-999:0.5"),
             "radius 'discrete:1:0.5,2e-999:0.5': discrete: item 2: '2e-999' is out of the range of a double "
             "(underflows to 0)");
   // A token is quoted escaped and cut to 40 characters.
-  EXPECT_EQ(msg("constant:" + std::string(100, '1') + "x"),
-            "radius 'constant:" + std::string(100, '1') + "x': '" + std::string(40, '1') +
-                "...' (101 characters) is not a number (constant:R)");
+  EXPECT_EQ(msg("constant:" + std::string(100, '1') + "x"), "radius 'constant:" + std::string(100, '1') + "x': '" +
+                                                                std::string(40, '1') +
+                                                                "...' (101 characters) is not a number (constant:R)");
   EXPECT_EQ(msg("constant:1\x1b"), "radius 'constant:1\\x1B': '1\\x1B' is not a number (constant:R)");
   EXPECT_EQ(msg("normal:1,0.1,0.5"), "radius 'normal:1,0.1,0.5': normal takes MEAN,SD or MEAN,SD,LO,HI, got 3 values");
   EXPECT_EQ(msg("uniform:1,2@area"), "radius 'uniform:1,2@area': @ modifiers apply to discrete: and curve: only");
@@ -464,7 +465,8 @@ TEST(SizeTable, ReadsAndNamesTheBadLine) {
             "s.csv:1: expected a header 'radius,fraction', 'diameter,fraction', "
             "'radius,passing' or 'diameter,passing', got 'size,passing'");
   EXPECT_EQ(msg("diameter,passing\n1,0\n2,x\n"), "s.csv:3: 'x' is not a number");
-  EXPECT_EQ(msg("diameter,passing\n1,0\n2,1e-400\n"), "s.csv:3: '1e-400' is out of the range of a double (underflows to 0)");
+  EXPECT_EQ(msg("diameter,passing\n1,0\n2,1e-400\n"),
+            "s.csv:3: '1e-400' is out of the range of a double (underflows to 0)");
   EXPECT_EQ(msg("diameter,passing\n1,0\n2,0.5,3\n"),
             "s.csv:3: expected SIZE,FRACTION (2 comma-separated numbers), got '2,0.5,3'");
   EXPECT_EQ(msg("diameter,passing\n0.1,0\n0.2,40\n0.4,100\n"),

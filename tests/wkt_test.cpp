@@ -180,7 +180,8 @@ TEST(Wkt, MessagesQuoteAtMost40CharactersOfAToken) {
   EXPECT_EQ(number.detail(), "number '" + std::string(40, '7') +
                                  "...' (200000 characters) is out of the range of a double (overflows to infinity)");
   const fp::WktError word = wkt_error(std::string(100000, 'Q') + "((0 0,1 0,1 1,0 0))");
-  EXPECT_EQ(word.detail(), "expected POLYGON or MULTIPOLYGON, found '" + std::string(40, 'Q') + "...' (100000 characters)");
+  EXPECT_EQ(word.detail(),
+            "expected POLYGON or MULTIPOLYGON, found '" + std::string(40, 'Q') + "...' (100000 characters)");
   const fp::WktError junk = wkt_error("POLYGON((0 0,1 0,1 1." + std::string(5000, '5') + ".\x01,0 0))");
   EXPECT_EQ(junk.detail(), "malformed number '1." + std::string(38, '5') + "...' (5004 characters)");
   for (const fp::WktError& e : {number, word, junk}) {

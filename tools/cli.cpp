@@ -1,8 +1,8 @@
 #include "cli.hpp"
 
 #include <charconv>
-#include <string_view>
 #include <filesystem>
+#include <string_view>
 #include <system_error>
 
 namespace frontpack_tool::cli {

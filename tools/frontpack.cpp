@@ -27,7 +27,8 @@ int main(int argc, char** argv) {
   CLI::App app{"frontpack: dense, exactly certified disk packings of polygonal domains", "frontpack"};
   app.set_version_flag("--version", std::string(frontpack::version_string));
   app.require_subcommand(1);
-  app.footer(std::string("Run 'frontpack SUBCOMMAND --help' for a worked example of each.\n\n") + frontpack_tool::cli::kExitCodes);
+  app.footer(std::string("Run 'frontpack SUBCOMMAND --help' for a worked example of each.\n\n") +
+             frontpack_tool::cli::kExitCodes);
 
   const std::vector<frontpack_tool::cli::Command> commands = {
       frontpack_tool::cli::add_info(app), frontpack_tool::cli::add_fill(app), frontpack_tool::cli::add_check(app),
@@ -60,4 +61,3 @@ int main(int argc, char** argv) {
     return code;
   }
 }
-

@@ -102,7 +102,7 @@ struct View {
   double y0 = 0;
   double margin = 0;
   double height = 0;
-  [[nodiscard]] double px(double length) const { return length * k * scale; }  // a length in pixels
+  [[nodiscard]] double px(double length) const { return length * k * scale; }     // a length in pixels
   [[nodiscard]] double units(double pixels) const { return pixels / scale / k; }  // and back
   [[nodiscard]] double x(double v) const { return margin + px(v - x0); }
   [[nodiscard]] double y(double v) const { return height - margin - px(v - y0); }
@@ -148,7 +148,8 @@ void huge_disk_path(cairo_t* cr, const View& view, frontpack::Point c, double r,
   const double uy = std::sin(base);
   double lo = 0;
   double hi = 0;
-  for (const auto& [x, y] : {std::pair{f.x0, f.y0}, std::pair{f.x1, f.y0}, std::pair{f.x1, f.y1}, std::pair{f.x0, f.y1}}) {
+  for (const auto& [x, y] :
+       {std::pair{f.x0, f.y0}, std::pair{f.x1, f.y0}, std::pair{f.x1, f.y1}, std::pair{f.x0, f.y1}}) {
     const double px = x - c.x;
     const double py = y - c.y;
     const double a = std::atan2(ux * py - uy * px, ux * px + uy * py);
@@ -241,7 +242,8 @@ void draw(cairo_t* cr, const View& view, Picture format, const frontpack::Domain
         r -= outline_width;
       }
       if (!(r <= extent)) {  // (in pixels, its radius or centre may be infinite: decided in domain units)
-        const frontpack::Disk shown{d.centre, outline_pass || !outlined ? d.radius : d.radius - view.units(outline_width)};
+        const frontpack::Disk shown{d.centre,
+                                    outline_pass || !outlined ? d.radius : d.radius - view.units(outline_width)};
         const Reach where = reach(shown, frame);
         if (where == Reach::none) {
           continue;
@@ -366,8 +368,7 @@ void render(frontpack::OutputFile& out, Picture format, const frontpack::Domain&
     throw frontpack::OptionError(std::string("--width ") + std::to_string(width) + ": expected 16 to 16384 pixels");
   }
   const double panel = options.histogram ? histogram_height(width) : 0;
-  const double height_real =
-      make_view(domain, width).px(domain.bbox().height()) + 2 * kMarginFraction * width + panel;
+  const double height_real = make_view(domain, width).px(domain.bbox().height()) + 2 * kMarginFraction * width + panel;
   if (!(height_real <= 32767)) {
     throw frontpack::OptionError(std::string("--width ") + std::to_string(width) +
                                  ": the picture would be taller than 32767 pixels (the domain is tall "

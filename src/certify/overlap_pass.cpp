@@ -222,7 +222,8 @@ void overlapping_pairs(std::span<const Disk> disks, std::vector<std::pair<std::s
   std::vector<Disk> local;
   for (std::size_t j = 0; j < tiles.rows(); ++j) {
     for (std::size_t i = 0; i < tiles.columns(); ++i) {
-      const std::span<const std::uint32_t> own = tiles.disks_of(static_cast<std::ptrdiff_t>(i), static_cast<std::ptrdiff_t>(j));
+      const std::span<const std::uint32_t> own =
+          tiles.disks_of(static_cast<std::ptrdiff_t>(i), static_cast<std::ptrdiff_t>(j));
       if (own.empty()) {
         continue;
       }
@@ -239,7 +240,8 @@ void overlapping_pairs(std::span<const Disk> disks, std::vector<std::pair<std::s
   std::sort(out.begin(), out.end());
 }
 
-std::size_t drop_one_of_each_pair(std::vector<Disk>& disks, std::span<const std::pair<std::size_t, std::size_t>> pairs) {
+std::size_t drop_one_of_each_pair(std::vector<Disk>& disks,
+                                  std::span<const std::pair<std::size_t, std::size_t>> pairs) {
   if (pairs.empty()) {
     return 0;
   }

@@ -8,7 +8,6 @@
 
 namespace frontpack::detail {
 
-
 std::string format_double(double value) {
   std::array<char, 32> buffer{};
   const auto [end, ec] = std::to_chars(buffer.data(), buffer.data() + buffer.size(), value);

@@ -8,7 +8,6 @@
 
 namespace frontpack::detail {
 
-
 // The cells of a grid along an axis `g` cells long (a length over a cell size, maybe a fraction
 // of a cell more): floor(g) + 1, at least 1 and at most `cap`. A NaN (lengths that overflowed, or a
 // cell size that underflowed) gives 1: a coarser grid finds the same neighbours, more slowly.

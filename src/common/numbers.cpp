@@ -32,7 +32,7 @@ bool nonzero_mantissa(std::string_view token) noexcept {
 // floor(log10 |x|) within one, is the exponent plus the position of the first nonzero digit.
 bool too_small(std::string_view token) noexcept {
   long order = 0;
-  long before_point = 0;      // digits before the point from the first nonzero one
+  long before_point = 0;       // digits before the point from the first nonzero one
   long zeros_after_point = 0;  // zeros between the point and the first nonzero digit
   bool nonzero = false;
   bool point = false;

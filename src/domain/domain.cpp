@@ -10,9 +10,9 @@
 #include <stdexcept>
 #include <utility>
 
-#include "domain/edge_grid.hpp"
 #include "common/format.hpp"
 #include "common/read_file.hpp"
+#include "domain/edge_grid.hpp"
 #include "domain/ring_set.hpp"
 #include "domain/wkt_reader.hpp"
 

@@ -4,8 +4,8 @@
 #include <cmath>
 #include <limits>
 
-#include "exact/predicates.hpp"
 #include "common/float_bits.hpp"
+#include "exact/predicates.hpp"
 
 namespace frontpack::detail {
 

@@ -80,7 +80,9 @@ void Validator::check_connectivity() const {
 
 // Reports the loop closed by linking `ring` to touch node `node`: the path between them
 // through the links made so far, found breadth first.
-[[noreturn]] void Validator::throw_loop(std::uint32_t part, std::uint32_t ring_id, std::uint32_t node, const std::vector<std::pair<std::uint32_t, std::uint32_t>>& joined, const std::vector<Point>& point_of) const {
+[[noreturn]] void Validator::throw_loop(std::uint32_t part, std::uint32_t ring_id, std::uint32_t node,
+                                        const std::vector<std::pair<std::uint32_t, std::uint32_t>>& joined,
+                                        const std::vector<Point>& point_of) const {
   const std::size_t R = rs_.rings.size();
   std::vector<std::vector<std::uint32_t>> adj(R + point_of.size());
   for (const auto& [r, n] : joined) {

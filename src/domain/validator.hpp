@@ -18,11 +18,11 @@
 #include <tuple>
 #include <vector>
 
-#include "domain/edge_sweep.hpp"
-#include "exact/predicates.hpp"
 #include "common/format.hpp"
+#include "domain/edge_sweep.hpp"
 #include "domain/ring_set.hpp"
 #include "domain/ring_tree.hpp"
+#include "exact/predicates.hpp"
 
 #include "domain/edge_grid.hpp"
 
@@ -201,8 +201,7 @@ class Validator {
 
   // A point of ring r that lies on no other ring: a vertex that is not a touch point, else a
   // point on an edge between touch points (computed exactly, tested without the grid).
-  [[nodiscard]] std::optional<std::uint32_t> free_vertex(std::uint32_t r,
-                                                         const std::vector<Point>& touch_points) const;
+  [[nodiscard]] std::optional<std::uint32_t> free_vertex(std::uint32_t r, const std::vector<Point>& touch_points) const;
 
   // Parity of the crossings of a horizontal ray from an exact point with each ring other than
   // `self` (brute force, exact constructions): the fallback when every vertex of a ring touches

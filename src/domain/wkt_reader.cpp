@@ -6,9 +6,9 @@
 #include <cmath>
 #include <string>
 
-#include "frontpack/errors.hpp"
 #include "common/numbers.hpp"
 #include "common/text.hpp"
+#include "frontpack/errors.hpp"
 
 namespace frontpack::detail {
 

@@ -203,7 +203,8 @@ class Front {
 
   // Whether a disk at (x, y, r) overlaps front node v (a disk or a wall).
   bool overlaps_node(const Probe& p, std::int32_t v) {
-    return is_wall(v) ? Open && crosses_wall(v, p.x, p.y, p.r) : overlap_.overlaps(p, nodes_[static_cast<std::size_t>(v)]);
+    return is_wall(v) ? Open && crosses_wall(v, p.x, p.y, p.r)
+                      : overlap_.overlaps(p, nodes_[static_cast<std::size_t>(v)]);
   }
 
   // Whether a disk at (x, y, r) overlaps any placed disk or any wall, other than walls c and n.
@@ -217,8 +218,8 @@ class Front {
     const double y = p.y;
     const double r = p.r;
     if constexpr (Open) {
-      const bool clear_of_walls =
-          x - r >= box_.xmin + overlap_.band() && x + r <= box_.xmax - overlap_.band() && y - r >= box_.ymin + overlap_.band();
+      const bool clear_of_walls = x - r >= box_.xmin + overlap_.band() && x + r <= box_.xmax - overlap_.band() &&
+                                  y - r >= box_.ymin + overlap_.band();
       if (!clear_of_walls) {  // most candidates are: one test for the three walls
         for (const std::int32_t w : {kLeft, kBottom, kRight}) {
           if (w != c && w != n && crosses_wall(w, x, y, r)) {
@@ -522,7 +523,7 @@ class Front {
   std::size_t window_ = 5;
   RunControl control_;
   std::size_t fixed_bytes_ = 0;  // the grid's, for the memory limit's message
-  double area_ = 0;  // sum of r^2 over the disks placed, for progress reports
+  double area_ = 0;              // sum of r^2 over the disks placed, for progress reports
   double ox_ = 0;
   double oy_ = 0;
 

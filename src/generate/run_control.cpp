@@ -31,7 +31,8 @@ double estimate_disks(const Box& box, const RadiusDistribution& radii) {
   if (!(scaled_mean_square > 0)) {
     return std::numeric_limits<double>::infinity();  // radii too small to square even at their scale
   }
-  const double scaled = kEstimateFraction * (box.width() * scale.k) * (box.height() * scale.k) / (std::numbers::pi * scaled_mean_square);
+  const double scaled =
+      kEstimateFraction * (box.width() * scale.k) * (box.height() * scale.k) / (std::numbers::pi * scaled_mean_square);
   return std::isnan(scaled) ? std::numeric_limits<double>::infinity() : scaled;
 }
 

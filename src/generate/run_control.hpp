@@ -16,7 +16,7 @@ namespace frontpack::detail {
 struct FrontResult {
   bool truncated = false;
   bool cancelled = false;
-  bool over_memory = false;    ///< stopped before the disks would take more than memory_limit
+  bool over_memory = false;     ///< stopped before the disks would take more than memory_limit
   std::size_t fixed_bytes = 0;  ///< what the run's grids took besides the disks (for the message)
 };
 
@@ -43,9 +43,7 @@ class RunControl {
   /// are counted at peak_bytes_per_disk each, and stop at 15/16 of what that allows: the bound is
   /// a measured one (the closed form's peak was 55-64 bytes per disk generated on the shapes), and
   /// vectors growing by doubling (the voids) overshoot it for a moment.
-  void limit_memory(std::size_t bytes) noexcept {
-    budget_ = std::min(budget_, bytes / 16 * 15 / peak_bytes_per_disk);
-  }
+  void limit_memory(std::size_t bytes) noexcept { budget_ = std::min(budget_, bytes / 16 * 15 / peak_bytes_per_disk); }
   /// The disks that may be generated in total.
   [[nodiscard]] std::size_t budget() const noexcept { return budget_; }
 

@@ -37,11 +37,11 @@ struct FrontSettings {
 struct RunFrame {
   const RadiusDistribution* radii;
   WorkScale unit;
-  Point origin;              // the box's lower-left corner
-  double width, height;      // the box, local
-  double rmin, rmax;         // the radii's range, local
-  double clearance;          // local
-  LengthScale scale;         // for tangent_to_two()
+  Point origin;          // the box's lower-left corner
+  double width, height;  // the box, local
+  double rmin, rmax;     // the radii's range, local
+  double clearance;      // local
+  LengthScale scale;     // for tangent_to_two()
 
   RunFrame(const RadiusDistribution& radii_in, double clearance_in, const Box& box)
       : radii(&radii_in),

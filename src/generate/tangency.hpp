@@ -50,8 +50,8 @@ inline bool tangent_to_two(double ax, double ay, double ra, double bx, double by
 /// 0), so the new disk touches the wall there and s is 0 (computed, rounding made s^2 negative
 /// about half the time). False if the disk is too far from the line.
 template <class Line>
-inline bool tangent_to_disk_and_wall(double x, double y, double r, const Line& wall, double tx, double ty,
-                                     double gap, bool forward, bool on_line, double& px, double& py) noexcept {
+inline bool tangent_to_disk_and_wall(double x, double y, double r, const Line& wall, double tx, double ty, double gap,
+                                     bool forward, bool on_line, double& px, double& py) noexcept {
   const double a = r + gap;
   const double off = wall.nx * x + wall.ny * y - (wall.w + gap);  // signed distance to the line
   const double s2 = on_line ? 0 : a * a - off * off;

@@ -9,10 +9,10 @@
 #include <system_error>
 #include <vector>
 
-#include "frontpack/io.hpp"
 #include "common/numbers.hpp"
 #include "common/read_file.hpp"
 #include "common/text.hpp"
+#include "frontpack/io.hpp"
 
 namespace frontpack {
 

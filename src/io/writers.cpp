@@ -8,9 +8,9 @@
 #include <string>
 
 #include "common/format.hpp"
-#include "frontpack/output_file.hpp"
 #include "common/stop.hpp"
 #include "common/text.hpp"
+#include "frontpack/output_file.hpp"
 #include "frontpack/version.hpp"
 
 namespace frontpack {

@@ -21,7 +21,6 @@ namespace {
 
 using namespace detail;
 
-
 class Uniform final : public RadiusDistribution {
  public:
   Uniform(double lo, double hi) : lo_(lo), hi_(hi) {}
@@ -182,8 +181,6 @@ class LogNormal final : public RadiusDistribution {
   TruncatedStandardNormal z_;
   TruncatedStandardNormal area_z_;
 };
-
-
 
 }  // namespace
 

@@ -12,10 +12,10 @@
 #include <vector>
 
 #include "common/format.hpp"
-#include "frontpack/fill.hpp"
 #include "common/numbers.hpp"
 #include "common/read_file.hpp"
 #include "common/text.hpp"
+#include "frontpack/fill.hpp"
 
 namespace frontpack {
 

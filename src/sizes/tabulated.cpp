@@ -262,5 +262,4 @@ Radii Radii::grading_curve(std::vector<SizeFraction> points, Basis basis, SizeKi
   return make(std::make_shared<const GradingCurve>(std::move(radii), passing, basis, kind));
 }
 
-
 }  // namespace frontpack

@@ -22,18 +22,17 @@ namespace frontpack {
 
 namespace {
 
-using detail::EdgeDistanceIndex;
-using detail::square_safe_scale;
 using detail::count_contacts;
+using detail::EdgeDistanceIndex;
 using detail::ks_by_area;
 using detail::median_by_area;
 using detail::sample_fractions;
+using detail::square_safe_scale;
 using detail::wall_contacts;
 
 // measure() on the domain and the disks scaled by k (a power of two > 1: exact), with the lengths
 // and areas it reports scaled back: for lengths so small that their squares underflow.
-PackingStats measure_scaled(const Domain& domain, std::span<const Disk> disks, const StatsOptions& options,
-                            double k) {
+PackingStats measure_scaled(const Domain& domain, std::span<const Disk> disks, const StatsOptions& options, double k) {
   std::vector<Polygon> polygons = domain.polygons();
   const auto scale_ring = [k](Ring& ring) {
     for (Point& p : ring) {
@@ -107,8 +106,9 @@ PackingStats measure(const Domain& domain, std::span<const Disk> disks, const St
   }
   s.sizes =
       measure_sizes(radii, options.requested ? &options.requested->distribution() : nullptr, options.histogram_bins);
-  s.packing_fraction = s.disk_area == 0 ? 0 : s.disk_area / s.domain_area;  // (no disk: 0, also where the area underflows)
-  s.void_ratio = !(s.packing_fraction > 0)                ? std::numeric_limits<double>::infinity()
+  s.packing_fraction =
+      s.disk_area == 0 ? 0 : s.disk_area / s.domain_area;  // (no disk: 0, also where the area underflows)
+  s.void_ratio = !(s.packing_fraction > 0)           ? std::numeric_limits<double>::infinity()
                  : std::isfinite(s.packing_fraction) ? (1 - s.packing_fraction) / s.packing_fraction
                                                      : -1.0;  // disk areas beyond the doubles (radii of 1e308)
   const double rmax = s.sizes.rmax;
@@ -117,7 +117,7 @@ PackingStats measure(const Domain& domain, std::span<const Disk> disks, const St
       options.contact_gap > 0
           ? options.contact_gap
           : std::max(1e-9 * rmax, 0x1p-42 * std::min(domain.max_abs_coordinate() + 5 * rmax,
-                                                       std::numeric_limits<double>::max()));  // (finite for any radius)
+                                                     std::numeric_limits<double>::max()));  // (finite for any radius)
   const double w = s.band_width;
   const EdgeDistanceIndex edges(domain, w > 0 ? w : std::sqrt(domain.area()) / 64);
   sample_fractions(domain, disks, edges, w, options.samples, s, options.stop);

@@ -1,5 +1,5 @@
-// CellGrid (src/generate/disk_grid.hpp; WorkScale: src/generate/scale.hpp), the generators' uniform grid, at the ends of the double range: a
-// radius whose margin of 4 rmax overflows, or whose cell's reciprocal does, gets one cell that
+// CellGrid (src/generate/disk_grid.hpp; WorkScale: src/generate/scale.hpp), the generators' uniform grid, at the ends
+// of the double range: a radius whose margin of 4 rmax overflows, or whose cell's reciprocal does, gets one cell that
 // every finite coordinate near the box maps into (the grid was sized from a NaN before: an
 // undefined conversion, and the boundary method asked for an absurd allocation); ordinary radii
 // keep their grid.

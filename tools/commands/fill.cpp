@@ -230,29 +230,28 @@ Command add_fill(CLI::App& app) {
   auto args = std::make_shared<FillArgs>();
   CLI::App* cmd = app.add_subcommand("fill", "Fill a domain with disks (advancing front, certified exactly)");
   add_domain_options(*cmd, args->src);
-  cmd->add_option("--method", args->method,
-                   "closed (Sec. 2), open (Sec. 3) or boundary (the domain's edges as walls)")
+  cmd->add_option("--method", args->method, "closed (Sec. 2), open (Sec. 3) or boundary (the domain's edges as walls)")
       ->capture_default_str();
   cmd->add_option("--radius", args->radius, std::string(kRadiusHelp) + " (default " + kDefaultRadius + ")");
   cmd->add_option("--seed", args->seed, "64-bit seed, 0 to 18446744073709551615 (same seed, same packing)")
       ->capture_default_str();
   cmd->add_option("--max-disks", args->max_disks,
-                   "refuse runs estimated beyond this many disks, and stop a run that reaches it (exit 9)")
+                  "refuse runs estimated beyond this many disks, and stop a run that reaches it (exit 9)")
       ->capture_default_str();
   cmd->add_option("--memory-limit", args->memory_limit,
-                   "bytes a run may take, e.g. 512M or 2G (K, M, G, T: powers of 1024); refused up front or stopped "
-                   "before it would take more (exit 5); 0: three quarters of the machine's memory")
+                  "bytes a run may take, e.g. 512M or 2G (K, M, G, T: powers of 1024); refused up front or stopped "
+                  "before it would take more (exit 5); 0: three quarters of the machine's memory")
       ->capture_default_str();
   cmd->add_option("-o,--output", args->outputs,
-                   "output file, any number; format by extension: .csv, .txt/.yade (Yade), .data/.lmp (LAMMPS), "
-                   ".vtp (ParaView), .png/.svg/.pdf (picture)");
+                  "output file, any number; format by extension: .csv, .txt/.yade (Yade), .data/.lmp (LAMMPS), "
+                  ".vtp (ParaView), .png/.svg/.pdf (picture)");
   cmd->add_option("--format", args->format,
-                   "format of every -o instead of the extension: csv, yade, lammps, "
-                   "vtp, png, svg, pdf");
+                  "format of every -o instead of the extension: csv, yade, lammps, "
+                  "vtp, png, svg, pdf");
   cmd->add_option("--json", args->json, "write the summary as JSON to this file");
   cmd->add_option("--width", args->width, "picture width in pixels")->capture_default_str();
   cmd->add_flag("--no-histogram", args->no_histogram,
-                 "pictures without the size-distribution panel (histogram by area, KS distance)");
+                "pictures without the size-distribution panel (histogram by area, KS distance)");
   cmd->add_flag("-q,--quiet", args->quiet, "print nothing but errors (no summary, no progress bar)");
   cmd->footer(
       "Example:\n"

@@ -73,10 +73,10 @@ Command add_render(CLI::App& app) {
   cmd->add_option("--width", args->width, "width in pixels (height: the domain's, plus the histogram)")
       ->capture_default_str();
   cmd->add_option("--radius", args->radius,
-                     "the requested radius distribution (a --radius SPEC of fill): drawn over the histogram, "
-                     "with the KS distance by area");
+                  "the requested radius distribution (a --radius SPEC of fill): drawn over the histogram, "
+                  "with the KS distance by area");
   cmd->add_flag("--no-histogram", args->no_histogram,
-                   "the packing alone, without the size-distribution panel below it");
+                "the packing alone, without the size-distribution panel below it");
   cmd->add_flag("-q,--quiet", args->quiet, "print nothing but errors");
   cmd->footer(
       "Example:\n"

@@ -353,9 +353,9 @@ class BoundaryFront {
       // element it finds bounds the void the gap leaves, the deepest one if the grid is scanned).
       // In the interior, the disks most often in the way are tried before the scan (in_the_way()).
       const Gap first{x, y};
-      const std::int32_t d =
-          move == moves && move > 0 ? obstacles_.deepest<true>(elements_, p)
-                                    : obstacles_.deepest(elements_, p, move == 0 && !walled ? &first : nullptr);
+      const std::int32_t d = move == moves && move > 0
+                                 ? obstacles_.deepest<true>(elements_, p)
+                                 : obstacles_.deepest(elements_, p, move == 0 && !walled ? &first : nullptr);
       if (d == kNone) {
         if (!elements_.supported_by(x, px, py) || !elements_.supported_by(y, px, py)) {
           return result;
@@ -398,10 +398,9 @@ class BoundaryFront {
       // not tell its sides apart.
       // Both pockets first, in one computation (pocket_pair()).
       const std::array<Gap, 2> split{Gap{x, n}, Gap{n, y}};
-      const std::array<double, 2> caps = is_wall(g.bound)
-                                             ? std::array<double, 2>{pocket(elements_, x, n, g.bound),
-                                                                     pocket(elements_, n, y, g.bound)}
-                                             : pocket_pair(elements_, x, n, y, g.bound);
+      const std::array<double, 2> caps =
+          is_wall(g.bound) ? std::array<double, 2>{pocket(elements_, x, n, g.bound), pocket(elements_, n, y, g.bound)}
+                           : pocket_pair(elements_, x, n, y, g.bound);
       for (std::size_t i = 0; i < 2; ++i) {
         if (caps[i] >= 0 && caps[i] < frame_.rmax) {
           link(split[i]);
@@ -489,7 +488,7 @@ class BoundaryFront {
   std::size_t head_ = 0;
   std::array<VoidBuckets<Gap, kClasses>, 2> voids_;  // [1]: on a rough wall
 
-  Obstacles obstacles_;  // the grid and the wall lists
+  Obstacles obstacles_;                  // the grid and the wall lists
   std::vector<std::size_t> ring_first_;  // the first wall of each ring
   std::vector<std::uint8_t> rough_;
   bool any_rough_ = false;  // a rough wall exists (else no void is kept on side 1)

@@ -34,8 +34,7 @@ class Obstacles {
  public:
   static constexpr std::uint32_t kWallList = 16;  // a cell with more walls than this asks the wall tree
 
-  Obstacles(const RunFrame& frame, FillStats& stats) noexcept
-      : overlap_(frame.clearance, stats), rmax_(frame.rmax) {}
+  Obstacles(const RunFrame& frame, FillStats& stats) noexcept : overlap_(frame.clearance, stats), rmax_(frame.rmax) {}
 
   /// Builds the grid over the frame's box and the lists of the walls near its cells; checks them
   /// against the memory limit. Returns the bytes they keep for the run.

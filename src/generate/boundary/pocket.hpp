@@ -94,7 +94,8 @@ inline T smallest_root(T ux, T uy, T vx, T vy, T ri, Accept accept) noexcept {
 // degenerate is -1 in a double and NaN in a V2, and one whose quadratic is linear (a lane
 // cannot branch) is NaN in a V2 too: both are rare, and pocket_pair() computes them alone.
 template <class T>
-[[nodiscard]] inline T pocket_of_nodes(T ax, T ay, T ra, T bx, T by, T rb, T dx, T dy, T rd, const LengthScale& unit) noexcept {
+[[nodiscard]] inline T pocket_of_nodes(T ax, T ay, T ra, T bx, T by, T rb, T dx, T dy, T rd,
+                                       const LengthScale& unit) noexcept {
   // Relative to a's centre: |p|^2 = (ra + rho)^2 and, subtracting, c_i . p = alpha_i + beta_i rho.
   // At the scale of rmax (`unit`): the degeneracy test below compares fourth powers of lengths.
   const double k = unit.k;
@@ -211,7 +212,8 @@ inline double pocket_at_two_walls(const Wall& p, const Wall& q, const Node& ni) 
 
 // pocket() with one wall among the three: the circle of radius rho at distance rho from the
 // wall's line (inside) touching the two nodes from outside; the smallest such rho.
-[[nodiscard]] inline double pocket_at_wall(const Elements& el, std::int32_t a, std::int32_t b, std::int32_t d) noexcept {
+[[nodiscard]] inline double pocket_at_wall(const Elements& el, std::int32_t a, std::int32_t b,
+                                           std::int32_t d) noexcept {
   std::int32_t w = a;
   std::int32_t i = b;
   std::int32_t j = d;
@@ -240,7 +242,8 @@ inline double pocket_at_two_walls(const Wall& p, const Wall& q, const Node& ni) 
 // the node from outside; the smallest such rho. Its centre moves along a line as rho grows. The
 // walls are segments: where the circle's foot on a wall's line falls off the segment, a vertex
 // and not the line bounds the pocket, and none is computed (-1).
-[[nodiscard]] inline double pocket_at_walls(const Elements& el, std::int32_t a, std::int32_t b, std::int32_t d) noexcept {
+[[nodiscard]] inline double pocket_at_walls(const Elements& el, std::int32_t a, std::int32_t b,
+                                            std::int32_t d) noexcept {
   std::int32_t w1 = a;
   std::int32_t w2 = b;
   std::int32_t i = d;
@@ -289,8 +292,8 @@ inline double pocket_at_two_walls(const Wall& p, const Wall& q, const Node& ni) 
   const BoundaryNode& m = el.node(n);
   const BoundaryNode& b = el.node(y);
   const BoundaryNode& o = el.node(d);
-  const V2 rho = pocket_of_nodes<V2>(V2{a.x, m.x}, V2{a.y, m.y}, V2{a.r, m.r}, V2{m.x, b.x}, V2{m.y, b.y},
-                                     V2{m.r, b.r}, lanes<V2>(o.x), lanes<V2>(o.y), lanes<V2>(o.r), el.scale());
+  const V2 rho = pocket_of_nodes<V2>(V2{a.x, m.x}, V2{a.y, m.y}, V2{a.r, m.r}, V2{m.x, b.x}, V2{m.y, b.y}, V2{m.r, b.r},
+                                     lanes<V2>(o.x), lanes<V2>(o.y), lanes<V2>(o.r), el.scale());
   std::array<double, 2> caps{rho[0], rho[1]};
   if (x == d) {
     caps[0] = -1;

@@ -42,7 +42,7 @@ struct Seeding {
 /// A place inside the polygon for a seed pair: a disk of radius r at the point returned and one of
 /// radius r2 beside it, to the right, apart by the clearance, both clear of every element. Tried
 /// at up to kSeedTries points drawn in the polygon's box; nothing if none fits.
-[[nodiscard]] std::optional<Point> seed_pair_at(Obstacles& obstacles, const Elements& elements,
-                                                const RunFrame& frame, Rng& rng, double r, double r2);
+[[nodiscard]] std::optional<Point> seed_pair_at(Obstacles& obstacles, const Elements& elements, const RunFrame& frame,
+                                                Rng& rng, double r, double r2);
 
 }  // namespace frontpack::detail

@@ -44,12 +44,12 @@ void WallIndex::release() noexcept {
   detail::release(walled_);
 }
 
-  // Walls per cell: those meeting the cell grown by rmax + the clearance, kept for the cells of
-  // walled blocks only (below). Found as (cell, wall) pairs, row by row along each wall: in a
-  // row, only the columns that the wall's stretch in the row's band can reach are tested, so
-  // that the work follows the walls' length and not the area of their boxes (a diagonal wall's
-  // box is a quarter of the grid: testing every cell of it took 49 ms, 14% of the front, on a
-  // 1M-disk diamond), and nothing is kept per cell of the grid.
+// Walls per cell: those meeting the cell grown by rmax + the clearance, kept for the cells of
+// walled blocks only (below). Found as (cell, wall) pairs, row by row along each wall: in a
+// row, only the columns that the wall's stretch in the row's band can reach are tested, so
+// that the work follows the walls' length and not the area of their boxes (a diagonal wall's
+// box is a quarter of the grid: testing every cell of it took 49 ms, 14% of the front, on a
+// 1M-disk diamond), and nothing is kept per cell of the grid.
 std::vector<WallIndex::Pair> WallIndex::list_pairs(const CellGrid& grid, double reach, std::size_t need,
                                                    const SetupBudget& budget) const {
   std::vector<Pair> pairs;
@@ -92,8 +92,9 @@ std::vector<WallIndex::Pair> WallIndex::list_pairs(const CellGrid& grid, double 
                              static_cast<std::uint32_t>(e)});
       }
       if (budget.limit != 0 && need + 16 * pairs.size() >= budget.limit) {  // a row at a time
-        budget.check(need + 16 * pairs.size(), "the domain's edges come within reach of " + std::to_string(pairs.size()) +
-                                                 "+ cells of its grid, counted with multiplicity");
+        budget.check(need + 16 * pairs.size(), "the domain's edges come within reach of " +
+                                                   std::to_string(pairs.size()) +
+                                                   "+ cells of its grid, counted with multiplicity");
       }
     }
   }
@@ -142,9 +143,9 @@ void WallIndex::group(std::vector<Pair>& pairs, std::size_t blocks, std::size_t 
     walled_blocks += static_cast<std::size_t>(std::popcount(bits));
   }
   budget.check(need + 12 * grouped.size() + walled_blocks * (kBlockCells + 1) * sizeof(std::uint32_t),
-             "the domain's edges come near " + std::to_string(walled_blocks) + " blocks of " +
-                 std::to_string(kBlockCells) + " cells of its grid, with " + std::to_string(grouped.size()) +
-                 " (cell, wall) pairs");
+               "the domain's edges come near " + std::to_string(walled_blocks) + " blocks of " +
+                   std::to_string(kBlockCells) + " cells of its grid, with " + std::to_string(grouped.size()) +
+                   " (cell, wall) pairs");
   cell_walls_.reserve(walled_blocks * (kBlockCells + 1));
   wall_ids_.resize(grouped.size());
   std::array<std::uint32_t, kBlockCells + 1> at{};
@@ -187,8 +188,8 @@ void WallIndex::build_tree() {
   for (std::size_t k = leaves_ - 1; k >= 1; --k) {
     const Bounds& l = tree_[2 * k];
     const Bounds& r = tree_[2 * k + 1];
-    tree_[k] = Bounds{std::min(l.xmin, r.xmin), std::min(l.ymin, r.ymin), std::max(l.xmax, r.xmax),
-                      std::max(l.ymax, r.ymax)};
+    tree_[k] =
+        Bounds{std::min(l.xmin, r.xmin), std::min(l.ymin, r.ymin), std::max(l.xmax, r.xmax), std::max(l.ymax, r.ymax)};
   }
 }
 

@@ -64,13 +64,13 @@ class WallIndex {
   /// The k-th entry of the cell lists: a wall's element id.
   [[nodiscard]] std::int32_t id(std::uint32_t k) const noexcept { return wall_ids_[k]; }
 
-    // The walls in a bounding-box tree, for cells whose list is long (a ring of 100,000 short edges
-    // puts hundreds of walls within rmax of every cell along it; scanning them all made such rings
-    // cost hundreds of microseconds per disk). The tree is implicit over the walls in their order,
-    // which follows the rings, so consecutive walls are neighbours and a node's box stays small:
-    // leaves of kLeafWalls walls, node k's children 2k and 2k + 1, leaves from index leaves_. Built
-    // once; queries allocate nothing. (Boost.Geometry's rtree allocates in its nearest query, and
-    // CGAL 5.5's AABB tree is three-dimensional only.)
+  // The walls in a bounding-box tree, for cells whose list is long (a ring of 100,000 short edges
+  // puts hundreds of walls within rmax of every cell along it; scanning them all made such rings
+  // cost hundreds of microseconds per disk). The tree is implicit over the walls in their order,
+  // which follows the rings, so consecutive walls are neighbours and a node's box stays small:
+  // leaves of kLeafWalls walls, node k's children 2k and 2k + 1, leaves from index leaves_. Built
+  // once; queries allocate nothing. (Boost.Geometry's rtree allocates in its nearest query, and
+  // CGAL 5.5's AABB tree is three-dimensional only.)
 
   // The wall nearest to (x, y) at a squared distance below d2 (on return, its squared distance),
   // or kNoElement. Of walls at the same distance, the first in order, as the cell lists have them.

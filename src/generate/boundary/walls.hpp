@@ -14,8 +14,12 @@ namespace frontpack::detail {
 
 // Element ids: a node (disk or reflex vertex) is >= 0, wall e is -(e + 1); kNoElement is none.
 inline constexpr std::int32_t kNoElement = std::numeric_limits<std::int32_t>::min();
-[[nodiscard]] inline std::int32_t wall_id(std::size_t e) noexcept { return -(static_cast<std::int32_t>(e) + 1); }
-[[nodiscard]] inline std::size_t wall_index(std::int32_t id) noexcept { return static_cast<std::size_t>(-(id + 1)); }
+[[nodiscard]] inline std::int32_t wall_id(std::size_t e) noexcept {
+  return -(static_cast<std::int32_t>(e) + 1);
+}
+[[nodiscard]] inline std::size_t wall_index(std::int32_t id) noexcept {
+  return static_cast<std::size_t>(-(id + 1));
+}
 
 // kSlideTurn, 0.35 rad (20 degrees): a vertex where the boundary turns by less is no corner: the
 // front does not start there, and the wall layer slides across it (slide()). Used through its
@@ -48,7 +52,6 @@ inline double length(double dx, double dy) noexcept {
   return std::ldexp(std::sqrt(x * x + y * y), e);
 }
 
-
 /// The wall a -> b (the domain on its left).
 inline Wall make_wall(double ax, double ay, double bx, double by) noexcept {
   const double dx = bx - ax;
@@ -75,7 +78,6 @@ inline double distance2(const Wall& wl, double x, double y) noexcept {
   const double dy = y - qy;
   return dx * dx + dy * dy;
 }
-
 
 // Whether segment wl meets the box [x0, x1] x [y0, y1] (Liang-Barsky clipping; conservative
 // enough: the box is already grown by the reach).
@@ -105,6 +107,5 @@ inline bool segment_meets_box(const Wall& wl, double x0, double y0, double x1, d
   }
   return true;
 }
-
 
 }  // namespace frontpack::detail
