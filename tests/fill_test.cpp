@@ -497,3 +497,25 @@ TEST(FillOptions, DefaultsAreTheToolsAndTheSpecParsesToTheDefaultRadii) {
   EXPECT_EQ(parsed.min(), 0.01);
   EXPECT_EQ(parsed.max(), 0.05);
 }
+
+// fill_voids = false is the paper's forms as published; the boundary method's voids are part of
+// it, and without them it left large empty areas, so it refuses the option rather than return
+// such a packing.
+TEST(FillOptions, BoundaryRefusesFillVoidsOffAndThePaperFormsTakeIt) {
+  const fp::Domain square = fp::Domain::from_wkt("POLYGON((0 0,1 0,1 1,0 1,0 0))");
+  fp::FillOptions o;
+  o.radii = fp::Radii::uniform(0.02, 0.05);
+  o.fill_voids = false;
+  o.method = fp::Method::boundary;
+  try {
+    (void)fp::fill(square, o);
+    ADD_FAILURE() << "boundary with fill_voids = false was not refused";
+  } catch (const fp::OptionError& e) {
+    EXPECT_NE(std::string(e.what()).find("boundary method keeps its voids"), std::string::npos) << e.what();
+  }
+  for (const fp::Method m : {fp::Method::closed, fp::Method::open}) {
+    o.method = m;
+    const fp::Packing p = fp::fill(square, o);
+    EXPECT_GT(p.disks.size(), 100U) << fp::to_string(m);
+  }
+}

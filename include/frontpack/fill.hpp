@@ -63,7 +63,9 @@ struct FillOptions {
   /// Void filling (all methods): the voids the front leaves behind (the segments its cases
   /// (b)-(d) cut off; for the boundary method also the cusps behind each disk) are kept, and each
   /// new disk is tried there first, before the front. Every drawn radius is still placed, so the
-  /// size distribution is unchanged. false gives the paper's forms as published.
+  /// size distribution is unchanged. false gives the paper's forms as published; the boundary
+  /// method refuses it (OptionError): its voids are part of the method, and without them it left
+  /// large empty areas.
   bool fill_voids = true;
   /// Refuse requests whose estimated disk count exceeds this (LimitError), and stop a run that
   /// reaches it (Packing::truncated).

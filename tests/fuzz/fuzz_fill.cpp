@@ -510,8 +510,8 @@ void fill(const std::uint8_t* data, std::size_t size) {
                                                         : Method::closed;
   options.seed = seed;
   options.window = window < 200 ? 5 : window % 8;  // mostly the paper's 5; sometimes 0 (whole front)..7
-  options.fill_voids = (repeat & 0x08) == 0;
-  options.max_disks = 20'000;  // bounded work per input
+  options.fill_voids = (repeat & 0x08) == 0 || options.method == Method::boundary;  // boundary: always
+  options.max_disks = 20'000;                                                       // bounded work per input
   try {
     // rmax from the domain's size down to 2^-10 of it; rmax / rmin up to 1024.
     const Box b = domain->bbox();
