@@ -107,10 +107,10 @@ INSTANTIATE_TEST_SUITE_P(
     Fills, Pinned,
     ::testing::Values(Pin{"plate_with_holes", fp::Method::open, false, 0, false, 7, 3879, 0x4ab6402df940cb92ULL},
                       Pin{"plate_with_holes", fp::Method::open, true, 0, false, 7, 3840, 0x468a1a926165b5efULL},
-                      Pin{"comb", fp::Method::boundary, true, 0, false, 7, 3925, 0x4ffd75d55dba33cbULL},
-                      Pin{"big_polygon", fp::Method::boundary, true, 0, false, 3, 4151, 0xb69f3255f6204621ULL},
-                      Pin{"comb", fp::Method::boundary, true, 0.5, false, 7, 1940, 0xc43793bc6ffe1bc9ULL},
-                      Pin{"plate_with_holes", fp::Method::boundary, true, 0.1, false, 7, 3556, 0xe3ea0191b059c138ULL},
+                      Pin{"comb", fp::Method::boundary, true, 0, false, 7, 4015, 0x4c69ab26b7d86ec6ULL},
+                      Pin{"big_polygon", fp::Method::boundary, true, 0, false, 3, 4196, 0x2dae17c3c329f84eULL},
+                      Pin{"comb", fp::Method::boundary, true, 0.5, false, 7, 2002, 0xc2a43829edc598fbULL},
+                      Pin{"plate_with_holes", fp::Method::boundary, true, 0.1, false, 7, 3626, 0xf95976ff89ab14aaULL},
                       Pin{"l_shape", fp::Method::boundary, true, 0, true, 7, 4211, 0x86ec661eab409c4bULL}));
 
 }  // namespace

@@ -197,6 +197,97 @@ def table(tool, shapes, disks, methods, log):
     return "\n".join(lines) + "\n"
 
 
+# --- the size-ratio table (issue #29): every method over the size ratios ------------------------
+
+QUALITY_SHAPES = ("unit_square.wkt", "plate_with_holes.wkt", "gear.wkt", "hole_touching.wkt")
+PROFILE_BINS = 6  # the coverage profile's bins [k, k + 1) rmax from the boundary, k < 6
+
+
+def area_uniform_curve(lo, hi, points=25):
+    """A grading curve (radii, by area) uniform by area on [lo, hi]: the curve is linear in
+    log(size) between its points, so 25 points make it uniform to within 0.1% in area."""
+    pts = [lo + (hi - lo) * i / (points - 1) for i in range(points)]
+    return "curve:" + ",".join("%s:%s" % (fmt_num(p), fmt_num(i / (points - 1))) for i, p in enumerate(pts)) + "@radius"
+
+
+def size_specs(area, disks):
+    """(label, spec) for the radius distributions of issue #29, each scaled to about `disks` disks
+    covering 0.8 of `area` (from the mean squared radius of each distribution)."""
+    def base(mean_square_over_r2):
+        return round2(math.sqrt(0.8 * area / (disks * math.pi * mean_square_over_r2)))
+
+    specs = []
+    r = base((1 + 1.4 ** 2) / 2)
+    specs.append(("bidisperse 1:1.4", "discrete:%s:0.5,%s:0.5" % (fmt_num(r), fmt_num(1.4 * r))))
+    for k in (1.4, 2, 3, 5, 10, 100):
+        r = base((1 + k + k * k) / 3)  # uniform on [r, k r]: E[r^2] = (1 + k + k^2) r^2 / 3
+        specs.append(("uniform %g" % k, "uniform:%s,%s" % (fmt_num(r), fmt_num(k * r))))
+    # lognormal, geometric sd 1.5, default bounds median / 1.5^3 .. median * 1.5^3: E[r^2] = median^2 exp(2 s^2)
+    s = math.log(1.5)
+    r = base(math.exp(2 * s * s))
+    specs.append(("lognormal GSD 1.5", "lognormal:%s,1.5" % fmt_num(r)))
+    for k in (3, 10):
+        r = base((k - 1) / math.log(k))  # uniform by area on [r, k r]: E[r^2] = (k - 1) r^2 / ln k
+        specs.append(("uniform by area %g" % k, area_uniform_curve(r, k * r)))
+    return specs
+
+
+def quality_run(tool, shape_path, method, spec, seed, workdir):
+    d = tempfile.mkdtemp(dir=workdir)
+    j, _ = fill(tool, shape_path, method, spec, seed, d)
+    disks = max(j["disks"], 1)
+    rmax = j["radius"]["max"]
+    interior = j["interior_fraction"]
+    profile = [b for b in j["coverage_profile"] if b["to_rmax"] is not None and 1 <= b["from_rmax"] < PROFILE_BINS]
+    worst = max((b["fraction"] - interior for b in profile), key=abs, default=0.0)
+    median_holes = j["holes"][0]["count"] if j["holes"] else 0
+    return {
+        "disks": j["disks"], "interior": interior, "band": j["band_fraction"],
+        "lec": j["largest_empty_circle"]["radius_upper"] / rmax, "holes": 100.0 * median_holes / disks,
+        "profile": worst, "cell_p1": j["cell_coverage"]["p1"], "rattlers": j["rattlers"] / disks,
+        "seg": j["segregation_ks_by_area"], "ks": j["radius"]["ks_by_area"],
+        "us_per_disk": 1e6 * j["seconds"]["front"] / disks, "culled": j["certificate"]["culled"],
+    }
+
+
+def quality_table(tool, shapes, disks, methods, jobs, log):
+    import concurrent.futures
+    lines = [
+        "| shape | radii | method | disks | interior | band | largest empty circle / rmax (max) | holes taking a median disk, % of disks | profile 1-6 rmax, worst - interior | cell coverage, 1st percentile | rattlers | segregation KS | KS by area | culled | front µs/disk |",
+        "|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|",
+    ]
+    specs_of = {}
+    with tempfile.TemporaryDirectory(prefix="quality_table_") as workdir:
+        work = []
+        for shape in shapes:
+            path = os.path.join(ROOT, "shapes", shape)
+            specs_of[shape] = size_specs(shape_area(tool, path), disks)
+            for label, spec in specs_of[shape]:
+                for method in methods:
+                    for seed in SEEDS:
+                        work.append((shape, label, method, seed, path, spec))
+        with concurrent.futures.ThreadPoolExecutor(max_workers=jobs) as ex:
+            runs = list(ex.map(lambda w: quality_run(tool, w[4], w[2], w[5], w[3], workdir), work))
+        rows = {}
+        for w, m in zip(work, runs):
+            rows.setdefault(w[:3], []).append(m)
+        for shape in shapes:
+            for label, spec in specs_of[shape]:
+                for method in methods:
+                    ms = rows[(shape, label, method)]
+                    mean = {k: sum(m[k] for m in ms) / len(ms) for k in ms[0]}
+                    lec = max(m["lec"] for m in ms)
+                    log("%-20s %-20s %-9s %7.0f disks interior %.4f" % (shape, label, method, mean["disks"], mean["interior"]))
+                    lines.append(
+                        "| %s | %s | %s | %.0f | %.4f | %.4f | %.2f | %.3f | %+.3f | %.3f | %.3f | %.3f | %.4f | %.0f | %.2f |"
+                        % (shape.removesuffix(".wkt"), label, method, mean["disks"], mean["interior"], mean["band"], lec,
+                           mean["holes"], mean["profile"], mean["cell_p1"], mean["rattlers"], mean["seg"], mean["ks"],
+                           mean["culled"], mean["us_per_disk"]))
+    specs = "\n".join("- %s: `%s`" % (label, spec) for label, spec in specs_of[shapes[0]])
+    return "\n".join(lines) + "\n\nRadius specs on %s (scaled by the square root of the area on the other shapes):\n\n%s\n" % (
+        shapes[0].removesuffix(".wkt"), specs)
+
+
 def pictures(tool, out_dir, log):
     """Closed, open and boundary fills of the same domain, same radii and seed, as PNGs."""
     os.makedirs(out_dir, exist_ok=True)
@@ -226,6 +317,10 @@ def main():
                     help="write docs/img/density-{closed,open,boundary}.png (%s, %s, seed %d, %d px) and no table"
                     % (PICTURE_SHAPE, PICTURE_RADIUS, PICTURE_SEED, PICTURE_WIDTH))
     ap.add_argument("--img-dir", default=os.path.join(ROOT, "docs", "img"), help="where --pictures writes")
+    ap.add_argument("--sizes", action="store_true",
+                    help="the size-ratio table instead (issue #29): bidisperse 1:1.4, uniform 1.4 to 100, lognormal, "
+                    "uniform by area; on %s; holes, coverage profile and cells" % ", ".join(QUALITY_SHAPES))
+    ap.add_argument("--jobs", type=int, default=2, help="runs at a time for --sizes (default 2)")
     ap.add_argument("-q", "--quiet", action="store_true", help="no progress lines on stderr")
     args = ap.parse_args()
 
@@ -241,9 +336,11 @@ def main():
         pictures(tool, args.img_dir, log)
         return
 
-    shapes = args.shapes if args.shapes else concave_shapes()
     t0 = time.monotonic()
-    text = table(tool, shapes, args.disks, args.methods, log)
+    if args.sizes:
+        text = quality_table(tool, args.shapes or list(QUALITY_SHAPES), args.disks, args.methods, args.jobs, log)
+    else:
+        text = table(tool, args.shapes or concave_shapes(), args.disks, args.methods, log)
     log("total %.0f s" % (time.monotonic() - t0))
     if args.out:
         with open(args.out, "w") as f:

@@ -62,10 +62,11 @@ struct FillOptions {
   double clearance = 0;
   /// Void filling (all methods): the voids the front leaves behind (the segments its cases
   /// (b)-(d) cut off; for the boundary method also the cusps behind each disk) are kept, and each
-  /// new disk is tried there first, before the front. Every drawn radius is still placed, so the
-  /// size distribution is unchanged. false gives the paper's forms as published; the boundary
-  /// method refuses it (OptionError): its voids are part of the method, and without them it left
-  /// large empty areas.
+  /// new disk is tried there first, before the front. Every drawn radius is still placed (the
+  /// boundary method skips at most 1% at the very end: FillStats::skipped_radii), so the size
+  /// distribution is unchanged. false gives the paper's forms as published; the boundary method
+  /// refuses it (OptionError): its voids are part of the method, and without them it left large
+  /// empty areas.
   bool fill_voids = true;
   /// Refuse requests whose estimated disk count exceeds this (LimitError), and stop a run that
   /// reaches it (Packing::truncated).
@@ -107,9 +108,12 @@ struct FillStats {
   std::size_t blocked_segments = 0;  ///< segments retired because a disk off the window overlapped
   std::size_t exact_checks = 0;      ///< overlap tests close enough to need the exact predicate
   std::size_t void_fills = 0;        ///< disks placed in voids left behind the front
-  double seconds_front = 0;          ///< wall time of the advancing front (generation)
-  double seconds_cull = 0;           ///< wall time of the exact containment pass
-  double seconds_overlap = 0;        ///< wall time of the global overlap pass
+  /// Radii drawn at the end of a boundary run, when the front was done, that fitted none of the
+  /// voids left and were not placed (at most 1% of the disks; docs/boundary-method.md).
+  std::size_t skipped_radii = 0;
+  double seconds_front = 0;    ///< wall time of the advancing front (generation)
+  double seconds_cull = 0;     ///< wall time of the exact containment pass
+  double seconds_overlap = 0;  ///< wall time of the global overlap pass
 };
 
 struct Packing {

@@ -109,6 +109,10 @@ Json fill_json(const FillArgs& a, const std::string& spec, const frontpack::Fill
                           {"dropped", c.dropped},
                           {"candidate_pairs", c.candidate_pairs},
                           {"exact", c.exact}};
+  j["generation"] = Json{{"attempts", p.stats.attempts},
+                         {"cuts", p.stats.cuts},
+                         {"void_fills", p.stats.void_fills},
+                         {"skipped_radii", p.stats.skipped_radii}};
   j["seconds"] = Json{{"front", p.stats.seconds_front},
                       {"cull", p.stats.seconds_cull},
                       {"overlap_pass", p.stats.seconds_overlap},

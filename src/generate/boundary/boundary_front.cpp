@@ -67,6 +67,13 @@ constexpr int kMoves = 0;
 constexpr int kClose = 2;
 constexpr int kWallCut = 1;
 constexpr int kWallMoves = 3;
+// The end of a run: the last voids, where the fronts met, are filled with the radii that fit
+// them, skipping those that fit none, at most one radius in kSkipPer placed. Without it the seam
+// where the fronts met last stayed sparse (the centre of a 10 x 10 square, uniform radii
+// 0.0019-0.019, 207k disks: 0.706 of a disk of radius 0.1 covered, 0.807 from 0.1 to 0.2, against
+// 0.868 around); skipping 1 in 1000 gave 0.829 and 0.852, 1 in 100 0.870 and 0.879, with the KS
+// distance by area from the request 0.0017 -> 0.0018.
+constexpr std::size_t kSkipPer = 100;
 constexpr int kVoidMoves = 3;
 
 class BoundaryFront {
@@ -141,10 +148,20 @@ class BoundaryFront {
         // The front is done and no void can take r. If the walls could not start a front (a
         // boundary rougher than the smallest disk: nothing fits in its corners) and the polygon
         // is far from full, a seed pair of disks starts one inside, growing outwards. Otherwise
-        // the run ends here. (Skipping r and drawing smaller radii for the voids left would fill
-        // them, but only by distorting the size distribution towards small radii.)
+        // r is skipped while voids are left, up to one radius in kSkipPer placed, and then the
+        // run ends. (Skipping without a bound fills every void, but only by distorting the size
+        // distribution towards small radii: uniform 1:10 packed 0.894 with a KS by area of 0.028.)
         if (seed(r)) {
           area_ += r * r;
+          r = draw();
+          cls = class_of(r);
+          continue;
+        }
+        if (skipped_ < (placed() - out_before_) / kSkipPer && !(voids_[0].empty() && voids_[1].empty())) {
+          // The voids left where the fronts met last (a seam of 0.71 against 0.87 around) take
+          // the radii that fit them; a radius that fits none is skipped, up to 1 in kSkipPer.
+          ++skipped_;
+          ++stats_.skipped_radii;
           r = draw();
           cls = class_of(r);
           continue;
@@ -508,6 +525,7 @@ class BoundaryFront {
   double area_ = 0;
   double polygon_area_ = 0;  // shoelace, for the seeding rule
   int seeds_ = 0;
+  std::size_t skipped_ = 0;
 
   Elements elements_;  // walls, reflex vertices, disks
 
