@@ -304,6 +304,46 @@ def pictures(tool, out_dir, log):
                 % (png, j["disks"], j["band_fraction"], j["interior_fraction"], os.path.getsize(png)))
 
 
+# --- the pictures of issue #29: bidisperse 1:1.4, and the seam where the fronts met last ----------
+
+NARROW_SHAPE = "plate_with_holes.wkt"
+NARROW_RADIUS = "discrete:0.024:0.5,0.0336:0.5"  # bidisperse 1:1.4, about 2,000 disks
+SEAM_RADIUS = "uniform:0.0019,0.019"  # rmax / rmin = 10 on a 10 x 10 square: about 207,000 disks
+SEAM_CROP = (4.5, 4.5, 5.5, 5.5)  # the centre, where the four walls' fronts meet last
+
+
+def quality_pictures(tool, label, out_dir, log):
+    """docs/img/quality-{bidisperse,seam}-LABEL.png with this tool: the bidisperse plate, and the
+    centre of a 10 x 10 square filled at rmax / rmin = 10 (the disks whose centre lies in the crop,
+    drawn in the crop)."""
+    os.makedirs(out_dir, exist_ok=True)
+    with tempfile.TemporaryDirectory(prefix="quality_pictures_") as workdir:
+        plate = os.path.join(ROOT, "shapes", NARROW_SHAPE)
+        j, csv = fill(tool, plate, "boundary", NARROW_RADIUS, PICTURE_SEED, workdir)
+        png = os.path.join(out_dir, "quality-bidisperse-%s.png" % label)
+        run([tool, "render", plate, csv, "-o", png, "--width", "700", "--no-histogram", "-q"])
+        log("%s: %d disks, interior %.4f" % (png, j["disks"], j["interior_fraction"]))
+
+        square = os.path.join(workdir, "square.wkt")
+        with open(square, "w") as f:
+            f.write("POLYGON((0 0,10 0,10 10,0 10,0 0))\n")
+        j, csv = fill(tool, square, "boundary", SEAM_RADIUS, PICTURE_SEED, workdir)
+        x0, y0, x1, y1 = SEAM_CROP
+        crop = os.path.join(workdir, "crop.wkt")
+        with open(crop, "w") as f:
+            f.write("POLYGON((%g %g,%g %g,%g %g,%g %g,%g %g))\n" % (x0, y0, x1, y0, x1, y1, x0, y1, x0, y0))
+        kept = os.path.join(workdir, "crop.csv")
+        with open(csv) as src, open(kept, "w") as dst:
+            dst.write(src.readline())
+            for line in src:
+                x, y, r = (float(v) for v in line.split(",")[:3])
+                if x0 + r <= x <= x1 - r and y0 + r <= y <= y1 - r:
+                    dst.write(line)
+        png = os.path.join(out_dir, "quality-seam-%s.png" % label)
+        run([tool, "render", crop, kept, "-o", png, "--width", "540", "--no-histogram", "-q"])
+        log("%s: %d disks in the square, interior %.4f" % (png, j["disks"], j["interior_fraction"]))
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     ap.add_argument("--frontpack", default=os.path.join(ROOT, "build", "release", "tools", "frontpack"),
@@ -320,6 +360,9 @@ def main():
     ap.add_argument("--sizes", action="store_true",
                     help="the size-ratio table instead (issue #29): bidisperse 1:1.4, uniform 1.4 to 100, lognormal, "
                     "uniform by area; on %s; holes, coverage profile and cells" % ", ".join(QUALITY_SHAPES))
+    ap.add_argument("--quality-pictures", metavar="LABEL",
+                    help="write docs/img/quality-{bidisperse,seam}-LABEL.png with --frontpack and no table "
+                    "(the bidisperse plate and the centre of a 10 x 10 square at rmax / rmin = 10)")
     ap.add_argument("--jobs", type=int, default=2, help="runs at a time for --sizes (default 2)")
     ap.add_argument("-q", "--quiet", action="store_true", help="no progress lines on stderr")
     args = ap.parse_args()
@@ -334,6 +377,9 @@ def main():
 
     if args.pictures:
         pictures(tool, args.img_dir, log)
+        return
+    if args.quality_pictures:
+        quality_pictures(tool, args.quality_pictures, args.img_dir, log)
         return
 
     t0 = time.monotonic()
