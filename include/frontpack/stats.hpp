@@ -66,6 +66,16 @@ struct StatsOptions {
   std::size_t samples = 1'000'000;
   /// Bins of the size histogram (log-spaced in radius).
   std::size_t histogram_bins = 20;
+  /// The largest empty circle (PackingStats::largest_empty_circle).
+  bool empty_circle = true;
+  /// Hole counts (PackingStats::holes) at these radii; empty: the packing's median radius by
+  /// number and its largest radius.
+  bool holes = true;
+  std::vector<double> hole_radii{};
+  /// Coverage by distance from the boundary (from the sample points: needs samples > 0).
+  bool coverage_profile = true;
+  /// Coverage of interior cells of side 8 rmax (exact disk-square areas).
+  bool cell_coverage = true;
   /// Once a stop is requested, measure() throws CancelledError.
   std::stop_token stop{};
 };
@@ -142,6 +152,46 @@ struct SizeStats {
   std::vector<HistogramBin> histogram;
 };
 
+/// The largest disk that fits in the domain without overlapping any disk: the maximum over the
+/// points p of the domain of f(p) = min(distance from p to the boundary, min_i |p - c_i| - r_i).
+/// radius = f(centre) <= true maximum <= radius_upper (branch and bound, see the header comment).
+struct EmptyCircle {
+  bool computed = false;    ///< false: switched off, or no domain area
+  double radius = 0;        ///< f at `centre`, a lower bound of the maximum
+  double radius_upper = 0;  ///< an upper bound of the maximum
+  Point centre;             ///< inside the domain (exact point location)
+  double tolerance = 0;     ///< the gap aimed at: radius_upper - radius <= tolerance
+};
+
+/// The number of connected components of {p in the domain : f(p) >= radius}: the holes where a
+/// disk of this radius fits (see the header comment for how connectivity is resolved).
+struct HoleCount {
+  double radius = 0;
+  std::size_t count = 0;
+};
+
+/// The covered fraction of the domain's points whose distance to the boundary is in [from, to)
+/// (to = infinity for the last bin), from the sample points.
+struct CoverageBin {
+  double from = 0;
+  double to = 0;
+  double fraction = 0;  ///< 0 if no sample fell in the bin
+  double error = 0;     ///< binomial standard error
+  std::size_t samples = 0;
+};
+
+/// The covered fractions of the square cells of side cell_side (8 rmax) that lie wholly in the
+/// interior: their number, the 1st, 5th and 50th percentiles (nearest rank) and the standard
+/// deviation (over the cells).
+struct CellCoverage {
+  double cell_side = 0;
+  std::size_t cells = 0;  ///< 0: not computed, or no cell wholly in the interior
+  double p1 = 0;
+  double p5 = 0;
+  double p50 = 0;
+  double sd = 0;
+};
+
 struct PackingStats {
   std::size_t disks = 0;
   double domain_area = 0;  ///< Domain::area()
@@ -175,6 +225,12 @@ struct PackingStats {
   double band_median_area = 0;     ///< median radius by area of the band disks (0: none)
   double inside_median_area = 0;   ///< the same for the other disks
   double segregation_ks_area = 0;  ///< two-sample KS distance by area, band disks against the others
+
+  EmptyCircle largest_empty_circle;
+  std::vector<HoleCount> holes;               ///< one per radius asked, in the order asked
+  double coverage_unit = 0;                   ///< the unit of the profile's bins: rmax
+  std::vector<CoverageBin> coverage_profile;  ///< [k, k + 1) coverage_unit for k = 0..5, then [6, inf)
+  CellCoverage cell_coverage;
 
   SizeStats sizes;
 };
