@@ -106,7 +106,12 @@ double Clearance::disk_distance(Point p, double cap) const {
     const std::size_t c = j * nx_ + i;
     for (std::size_t m = start_[c]; m < start_[c + 1]; ++m) {
       const Disk& d = disks_[members_[m]];
-      best = std::min(best, std::hypot(p.x - d.centre.x, p.y - d.centre.y) - d.radius);
+      const double dx = p.x - d.centre.x;
+      const double dy = p.y - d.centre.y;
+      const double d2 = dx * dx + dy * dy;
+      if (const double t = best + d.radius; t > 0 && d2 < t * t) {
+        best = std::sqrt(d2) - d.radius;
+      }
     }
   };
   const std::size_t reach = std::max(nx_, ny_);
@@ -144,23 +149,38 @@ SquareBounds Clearance::bound(const Square& q, std::span<const std::uint32_t> li
   const double hd = q.half_diagonal();
   // The disks' part: v = min |c - c_i| - r_i at the centre, and the upper bound
   // min_i (farthest point of q from c_i) - r_i, no larger than v + hd.
+  // (Square roots only for the disks that improve a minimum: sqrt(d2) - r < m exactly when
+  // m + r > 0 and d2 < (m + r)^2.)
   double v = kInf;
   double upper = kInf;
   for (const std::uint32_t k : list) {
     const Disk& d = disks_[k];
     const double dx = std::abs(d.centre.x - q.x);
     const double dy = std::abs(d.centre.y - q.y);
-    v = std::min(v, std::hypot(dx, dy) - d.radius);
-    upper = std::min(upper, std::hypot(dx + q.a, dy + q.a) - d.radius);
+    const double d2 = dx * dx + dy * dy;
+    if (const double t = v + d.radius; t > 0 && d2 < t * t) {
+      v = std::sqrt(d2) - d.radius;
+    }
+    const double ex = dx + q.a;
+    const double ey = dy + q.a;
+    const double e2 = ex * ex + ey * ey;
+    if (const double t = upper + d.radius; t > 0 && e2 < t * t) {
+      upper = std::sqrt(e2) - d.radius;
+    }
   }
   if (upper < threshold) {
     r.pruned = true;
     r.upper = upper;
     return r;
   }
+  // The boundary's part: the distance to the nearest edge, as far as it can matter (beyond
+  // upper + hd it changes neither the value nor the bound, on either side).
+  const double dist = edges_.distance({q.x, q.y}, upper + hd);
   if (!(v <= kReach * side_)) {
-    // The list may miss the nearest disk: search the grid (f is 1-Lipschitz, so v + hd bounds it).
-    v = disk_distance({q.x, q.y}, v);
+    // The list may miss the nearest disk: search the grid, as far as it can matter (a disk
+    // farther than dist + hd changes neither the value, which the boundary then decides, nor the
+    // bound, as f is 1-Lipschitz); v + hd bounds f on the square either way.
+    v = disk_distance({q.x, q.y}, std::min(v, dist + hd));
     upper = std::min(upper, v + hd);
     if (upper < threshold) {
       r.pruned = true;
@@ -168,10 +188,6 @@ SquareBounds Clearance::bound(const Square& q, std::span<const std::uint32_t> li
       return r;
     }
   }
-  // The boundary's part: the distance to the nearest edge, as far as it can matter (beyond
-  // upper + hd it changes neither the value nor the bound, on either side).
-  const double cap = upper + hd;
-  const double dist = edges_.distance({q.x, q.y}, std::isfinite(cap) ? cap : kInf);
   Side side = known;
   if (side == Side::unknown && std::min(v, dist) >= threshold) {
     const Location at = domain_.locate({q.x, q.y});
@@ -194,7 +210,7 @@ SquareBounds Clearance::bound(const Square& q, std::span<const std::uint32_t> li
       const Disk& d = disks_[k];
       const double dx = std::max(std::abs(d.centre.x - q.x) - q.a, 0.0);
       const double dy = std::max(std::abs(d.centre.y - q.y) - q.a, 0.0);
-      if (std::hypot(dx, dy) - d.radius <= upper) {
+      if (const double t = upper + d.radius; t >= 0 && dx * dx + dy * dy <= t * t) {
         keep->push_back(k);
       }
     }

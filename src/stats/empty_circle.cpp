@@ -100,11 +100,12 @@ class Search {
 // Two passes over the grid cells: the first bounds each cell and takes the value at its centre
 // (a good first best), the second searches the cells whose bound exceeds the best, largest bound
 // first, and stops at the first cell whose bound no longer does.
-EmptyCircle largest_empty_circle(const Clearance& f, double tolerance, const std::stop_token& stop) {
+EmptyCircle largest_empty_circle(const Clearance& f, double tolerance, std::vector<double>& upper,
+                                 const std::stop_token& stop) {
   Search search(f, tolerance);
   std::vector<std::uint32_t> list;
   const std::size_t n = f.nx() * f.ny();
-  std::vector<double> upper(n);
+  upper.assign(n, 0);
   for (std::size_t c = 0; c < n; ++c) {
     throw_if_stopped(stop, c);
     const std::size_t i = c % f.nx();

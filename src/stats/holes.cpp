@@ -3,12 +3,12 @@
 //
 // A square is dropped when f < rho on it (its upper bound), kept whole when f >= rho on it (the
 // centre's certain value minus the half-diagonal), and split otherwise, down to a half-diagonal
-// of rho / 64. The kept squares (leaves) cover {f >= rho}, and every point of the domain in a
-// leaf has f >= rho - 2 rho / 64 (a leaf's upper bound is at most its centre's value plus its
+// of rho / 32. The kept squares (leaves) cover {f >= rho}, and every point of the domain in a
+// leaf has f >= rho - 2 rho / 32 (a leaf's upper bound is at most its centre's value plus its
 // half-diagonal). The count is that of the connected components of the union of the closed
 // leaves (squares touching at an edge or a corner are joined) that hold a leaf whose centre is
-// certified to have f >= rho: a hole where a disk of radius rho (1 + 1/64) fits is never
-// missed, and two holes are counted as one only when {f >= rho (1 - 1/32)} joins them.
+// certified to have f >= rho: a hole where a disk of radius rho (1 + 1/32) fits is never
+// missed, and two holes are counted as one only when {f >= rho (1 - 1/16)} joins them.
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -41,7 +41,10 @@ struct Leaf {
 class HoleSearch {
  public:
   HoleSearch(const Clearance& f, double rho)
-      : f_(f), rho_(rho), delta_(rho / 64), lists_(kMaxDepth + 1), first_(f.nx() * f.ny() + 1, 0) {}
+      : f_(f), rho_(rho), delta_(rho / 32), lists_(kMaxDepth + 1), first_(f.nx() * f.ny() + 1, 0) {}
+
+  // A grid cell known to hold no point with f >= rho.
+  void skip_cell(std::size_t c) { first_[c + 1] = leaves_.size(); }
 
   // The leaves of grid cell c (cells in increasing order), sorted for lookups.
   void visit_cell(std::size_t c, std::span<const std::uint32_t> block) {
@@ -148,7 +151,8 @@ class HoleSearch {
 
 }  // namespace
 
-std::size_t count_holes(const Clearance& f, double rho, const std::stop_token& stop) {
+std::size_t count_holes(const Clearance& f, double rho, std::span<const double> cell_upper,
+                        const std::stop_token& stop) {
   if (!(rho > 0)) {
     return 0;
   }
@@ -156,6 +160,10 @@ std::size_t count_holes(const Clearance& f, double rho, const std::stop_token& s
   std::vector<std::uint32_t> list;
   for (std::size_t c = 0; c < f.nx() * f.ny(); ++c) {
     throw_if_stopped(stop, c);
+    if (!cell_upper.empty() && cell_upper[c] < rho) {
+      search.skip_cell(c);
+      continue;
+    }
     f.block(c % f.nx(), c / f.nx(), list);
     search.visit_cell(c, list);
   }

@@ -48,11 +48,15 @@ void sample_fractions(const Domain& domain, std::span<const Disk> disks, const E
 
 class Clearance;
 
-/// The largest empty circle, to within `tolerance` (empty_circle.cpp).
-EmptyCircle largest_empty_circle(const Clearance& f, double tolerance, const std::stop_token& stop);
+/// The largest empty circle, to within `tolerance` (empty_circle.cpp); `upper` receives an upper
+/// bound of f on each grid cell of f.
+EmptyCircle largest_empty_circle(const Clearance& f, double tolerance, std::vector<double>& upper,
+                                 const std::stop_token& stop);
 
-/// The number of holes that take a disk of radius rho (holes.cpp).
-std::size_t count_holes(const Clearance& f, double rho, const std::stop_token& stop);
+/// The number of holes that take a disk of radius rho (holes.cpp). `cell_upper`: upper bounds
+/// of f on the grid cells of f (largest_empty_circle()'s), or empty.
+std::size_t count_holes(const Clearance& f, double rho, std::span<const double> cell_upper,
+                        const std::stop_token& stop);
 
 /// The coverage of the interior cells of side 8 rmax (coverage.cpp).
 void measure_cell_coverage(const Domain& domain, std::span<const Disk> disks, const EdgeDistanceIndex& edges, double w,

@@ -105,15 +105,20 @@ void measure_voids(const Domain& domain, std::span<const Disk> disks, const Edge
     const Box b = domain.bbox();
     // 1% of the smallest radius; without disks a millionth of the domain's size.
     const double tolerance = disks.empty() ? 1e-6 * std::max(b.width(), b.height()) : 0.01 * s.sizes.rmin;
+    std::vector<double> cell_upper;  // stays empty without the empty circle
     if (options.empty_circle) {
-      s.largest_empty_circle = detail::largest_empty_circle(f, tolerance, options.stop);
+      s.largest_empty_circle = detail::largest_empty_circle(f, tolerance, cell_upper, options.stop);
     }
     if (holes) {
       for (const double rho : radii) {
         // No hole takes a disk larger than the largest empty circle.
         const bool none =
             s.largest_empty_circle.computed ? rho > s.largest_empty_circle.radius_upper : options.empty_circle;
-        s.holes.push_back({rho, none ? 0 : detail::count_holes(f, rho, options.stop)});
+        if (!s.holes.empty() && s.holes.back().radius == rho) {
+          s.holes.push_back(s.holes.back());  // (the default radii of equal disks)
+          continue;
+        }
+        s.holes.push_back({rho, none ? 0 : detail::count_holes(f, rho, cell_upper, options.stop)});
       }
     }
   }
