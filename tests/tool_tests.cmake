@@ -87,8 +87,6 @@ frontpack_tool_check(fill_all_formats 0
        "packing_fraction=^0\\.[6-9]" "interior_fraction=^0\\.[6-9]" "radius/min=^0\\.0" "radius/mean=^0\\.0"
        "certificate/certified=^ON$" "certificate/culled=^0$" "certificate/dropped=^0$" "certificate/exact=^ON$" "domain/holes=^7$"
        "seconds/total=^[0-9]" "outputs/6/format=^png$"
-       "largest_empty_circle/radius_over_rmax=^[0-9]" "holes/1/count=^[0-9]+$" "coverage_profile/6/to=^$"
-       "coverage_profile/5/to_rmax=^6(\\.0)?$" "cell_coverage/cell_side=^0\\.[0-9]+"
   ARGS fill ${S}/plate_with_holes.wkt --radius uniform:0.01,0.04 --seed 7 --width 401 -o ${O}/p.csv -o ${O}/p.txt
        -o ${O}/p.data -o ${O}/p.vtp -o ${O}/p.svg -o ${O}/p.pdf -o ${O}/p.png --json ${O}/s.json)
 set(O ${TOOL_OUT}/fill_no_histogram)
@@ -198,6 +196,12 @@ set(O ${TOOL_OUT}/stats_json)
 frontpack_tool_check(stats_json 0 "disks: +5 .*fraction: +0\\.2454 overall.*requested: +constant" FILES ${O}/s.json
   JSON ${O}/s.json "command=^stats$" "disks=^5$" "radius/max=^0\\.125$" "packing_fraction=^0\\.245"
   ARGS stats ${SQ} ${TD}/good.csv --radius constant:0.125 --json ${O}/s.json)
+# fill --json carries the measures of holes and seams too.
+set(O ${TOOL_OUT}/fill_json_voids)
+frontpack_tool_check(fill_json_voids 0 "disks: +[1-9][0-9]+" FILES ${O}/s.json
+  JSON ${O}/s.json "largest_empty_circle/radius_over_rmax=^[0-9]" "holes/1/count=^[0-9]+$" "coverage_profile/6/to=^$"
+       "coverage_profile/5/to_rmax=^6(\\.0)?$" "cell_coverage/cell_side=^0\\.[0-9]+" "cell_coverage/cells=^[1-9]"
+  ARGS fill ${SQ} --radius uniform:0.01,0.02 --seed 3 --json ${O}/s.json)
 # stats: the measures of holes and seams, and --hole-radius (repeatable).
 set(O ${TOOL_OUT}/stats_voids)
 frontpack_tool_check(stats_voids 0
