@@ -217,3 +217,209 @@ TEST(Stats, SandCurveByAreaInACertifiedPacking) {
             << ", band " << s.band_fraction << "), coordination " << s.mean_coordination << " (interior "
             << s.interior_coordination << "), rattlers " << s.rattlers << "\n";
 }
+
+namespace {
+
+// A hexagonal lattice of radius r (shrunk by 1e-12 so that rounding never makes neighbours
+// overlap) covering [-4r, w + 4r] x [-4r, h + 4r]: the domain [0, w] x [0, h] cuts it, so that
+// every point of the domain sees the lattice's voids and no wall gap of its own.
+std::vector<fp::Disk> hexagonal_over(double w, double h, double r) {
+  std::vector<fp::Disk> disks;
+  const double dy = std::sqrt(3.0) * r;
+  for (int t = 0; - 4 * r + dy * t <= h + 4 * r; ++t) {
+    const double y = -4 * r + dy * t;
+    for (int i = 0; - 4 * r + 2 * r * i <= w + 4 * r; ++i) {
+      disks.push_back({{-4 * r + 2 * r * i + (t % 2 == 0 ? 0 : r), y}, r * (1 - 1e-12)});
+    }
+  }
+  return disks;
+}
+
+// The disk of the lattice nearest to p.
+std::size_t nearest_disk(const std::vector<fp::Disk>& disks, fp::Point p) {
+  std::size_t best = 0;
+  for (std::size_t k = 0; k < disks.size(); ++k) {
+    const auto d = [&](std::size_t j) { return std::hypot(disks[j].centre.x - p.x, disks[j].centre.y - p.y); };
+    if (d(k) < d(best)) {
+      best = k;
+    }
+  }
+  return best;
+}
+
+fp::StatsOptions void_options(std::vector<double> radii = {}) {
+  fp::StatsOptions o;
+  o.samples = 0;
+  o.hole_radii = std::move(radii);
+  return o;
+}
+
+}  // namespace
+
+// The largest empty circle of an empty square of side 2 is its inscribed circle.
+TEST(Stats, EmptyCircleOfAnEmptySquare) {
+  const fp::PackingStats s = fp::measure(rectangle(2, 2), {}, void_options({0.5, 0.96, 1.01}));
+  const fp::EmptyCircle& e = s.largest_empty_circle;
+  ASSERT_TRUE(e.computed);
+  EXPECT_LE(e.radius, 1.0);
+  EXPECT_GE(e.radius_upper, 1.0);
+  EXPECT_LE(e.radius_upper - e.radius, e.tolerance);
+  EXPECT_LE(e.tolerance, 1e-5);
+  EXPECT_NEAR(e.centre.x, 1, 2e-5);
+  EXPECT_NEAR(e.centre.y, 1, 2e-5);
+  ASSERT_EQ(s.holes.size(), 3U);
+  EXPECT_EQ(s.holes[0].count, 1U);
+  EXPECT_EQ(s.holes[1].count, 1U);
+  EXPECT_EQ(s.holes[2].count, 0U);
+  // No disks: no default radii, no profile, no cells.
+  EXPECT_TRUE(fp::measure(rectangle(2, 2), {}, void_options()).holes.empty());
+}
+
+// In a hexagonal lattice the largest empty circle is the inscribed circle of a triangular void,
+// (2 / sqrt(3) - 1) r; a removed disk leaves a hole of radius r at its centre.
+TEST(Stats, EmptyCircleAndHolesOfAHexagonalLattice) {
+  const double r = 0.01;
+  const double w = 0.6;
+  const double h = 0.5;
+  const fp::Domain domain = rectangle(w, h);
+  std::vector<fp::Disk> disks = hexagonal_over(w, h, r);
+  const double void_radius = (2 / std::sqrt(3.0) - 1) * r + 1e-12 * r;
+  fp::PackingStats s = fp::measure(domain, disks, void_options({0.5 * r, 0.1 * r}));
+  fp::EmptyCircle e = s.largest_empty_circle;
+  EXPECT_LE(e.radius, void_radius * (1 + 1e-9));
+  EXPECT_GE(e.radius_upper, void_radius * (1 - 1e-9));
+  EXPECT_LE(e.radius_upper - e.radius, 0.01 * r * (1 + 1e-9));
+  EXPECT_EQ(domain.locate(e.centre), fp::Location::inside);
+  ASSERT_EQ(s.holes.size(), 2U);
+  EXPECT_EQ(s.holes[0].count, 0U);  // no void takes a disk of rmin / 2
+  // At 0.1 r every void is a hole: in a smaller domain, the count lies between the voids wholly
+  // inside and all the voids that meet it.
+  {
+    const double side = 0.2;
+    const fp::PackingStats small =
+        fp::measure(rectangle(side, side), hexagonal_over(side, side, r), void_options({0.1 * r}));
+    const double triangles = 2 * side * side / (2 * std::sqrt(3.0) * r * r);
+    EXPECT_GT(static_cast<double>(small.holes.at(0).count), 0.85 * triangles);
+    EXPECT_LT(static_cast<double>(small.holes.at(0).count), 1.15 * triangles);
+  }
+  // The same counts without the largest empty circle (which otherwise settles rho > its bound).
+  fp::StatsOptions o = void_options({0.5 * r});
+  o.empty_circle = false;
+  EXPECT_FALSE(fp::measure(domain, disks, o).largest_empty_circle.computed);
+  EXPECT_EQ(fp::measure(domain, disks, o).holes.at(0).count, 0U);
+
+  // One disk removed: a hole of radius r at its centre.
+  const std::size_t k1 = nearest_disk(disks, {0.2, 0.25});
+  const fp::Point c1 = disks[k1].centre;
+  std::vector<fp::Disk> one = disks;
+  one.erase(one.begin() + static_cast<std::ptrdiff_t>(k1));
+  s = fp::measure(domain, one, void_options({0.9 * r, 0.5 * r, 1.01 * r}));
+  e = s.largest_empty_circle;
+  const double hole = r * (1 + 1e-12);
+  EXPECT_LE(e.radius, hole * (1 + 1e-9));
+  EXPECT_GE(e.radius_upper, hole * (1 - 1e-9));
+  EXPECT_LE(e.radius_upper - e.radius, 0.01 * r * (1 + 1e-9));
+  EXPECT_LT(std::hypot(e.centre.x - c1.x, e.centre.y - c1.y), 0.02 * r);
+  EXPECT_EQ(s.holes[0].count, 1U);
+  EXPECT_EQ(s.holes[1].count, 1U);
+  EXPECT_EQ(s.holes[2].count, 0U);
+  o.hole_radii = {0.9 * r};
+  EXPECT_EQ(fp::measure(domain, one, o).holes.at(0).count, 1U);
+
+  // Two disks removed far apart: two holes. Two neighbours removed: one hole for disks up to
+  // sqrt(3) r - r = 0.732 r (the neck between them), two above.
+  const std::size_t k2 = nearest_disk(disks, {0.45, 0.3});
+  std::vector<fp::Disk> two;
+  for (std::size_t k = 0; k < disks.size(); ++k) {
+    if (k != k1 && k != k2) {
+      two.push_back(disks[k]);
+    }
+  }
+  s = fp::measure(domain, two, void_options({0.9 * r}));
+  EXPECT_EQ(s.holes.at(0).count, 2U);
+  const std::size_t k3 = nearest_disk(disks, {c1.x + 2 * r, c1.y});
+  two.clear();
+  for (std::size_t k = 0; k < disks.size(); ++k) {
+    if (k != k1 && k != k3) {
+      two.push_back(disks[k]);
+    }
+  }
+  s = fp::measure(domain, two, void_options({0.9 * r, 0.75 * r, 0.7 * r}));
+  EXPECT_EQ(s.holes.at(0).count, 2U);
+  EXPECT_EQ(s.holes.at(1).count, 2U);
+  EXPECT_EQ(s.holes.at(2).count, 1U);
+  EXPECT_NEAR(s.largest_empty_circle.radius, r, 0.01 * r);
+}
+
+// The square lattice of Stats.SquareLattice has the boundary on lines of symmetry of the lattice:
+// every bin of the profile is a union of quarter cells, covered pi / 4. Shifted by any offset,
+// every cell of side 8 r spans whole periods: covered exactly pi / 4.
+TEST(Stats, CoverageProfileAndCellsOfASquareLattice) {
+  const int m = 100;
+  const double r = 0.005;
+  const double side = 2 * r * m;
+  std::vector<fp::Disk> disks;
+  for (int j = 0; j < m; ++j) {
+    for (int i = 0; i < m; ++i) {
+      disks.push_back({{r * (2 * i + 1), r * (2 * j + 1)}, r});
+    }
+  }
+  const fp::Domain domain = rectangle(side, side);
+  fp::StatsOptions o;
+  o.samples = 1'000'000;
+  o.empty_circle = false;
+  o.holes = false;
+  fp::PackingStats s = fp::measure(domain, disks, o);
+  const double quarter_pi = std::numbers::pi / 4;
+  EXPECT_EQ(s.coverage_unit, r);
+  ASSERT_EQ(s.coverage_profile.size(), 7U);
+  std::size_t samples = 0;
+  for (std::size_t k = 0; k < 7; ++k) {
+    const fp::CoverageBin& bin = s.coverage_profile[k];
+    EXPECT_DOUBLE_EQ(bin.from, static_cast<double>(k) * r);
+    EXPECT_NEAR(bin.fraction, quarter_pi, 4 * bin.error) << k;
+    EXPECT_GT(bin.samples, 10'000U);
+    samples += bin.samples;
+  }
+  EXPECT_TRUE(std::isinf(s.coverage_profile.back().to));
+  EXPECT_EQ(samples, s.interior_samples + s.band_samples);
+  EXPECT_EQ(s.cell_coverage.cell_side, 8 * r);
+  EXPECT_EQ(s.cell_coverage.cells, 23U * 23U);  // 25 cells across; the outer ones come within 2 r of a wall
+  EXPECT_NEAR(s.cell_coverage.p1, quarter_pi, 1e-12);
+  EXPECT_NEAR(s.cell_coverage.p50, quarter_pi, 1e-12);
+  EXPECT_LT(s.cell_coverage.sd, 1e-12);
+  // Shifted (the disks overhang the domain: measure() takes them as given).
+  std::vector<fp::Disk> shifted;
+  for (int j = -1; j <= m; ++j) {
+    for (int i = -1; i <= m; ++i) {
+      shifted.push_back({{r * (2 * i + 1.37), r * (2 * j + 1.61)}, r});
+    }
+  }
+  o.samples = 0;
+  s = fp::measure(domain, shifted, o);
+  EXPECT_EQ(s.cell_coverage.cells, 23U * 23U);
+  EXPECT_NEAR(s.cell_coverage.p1, quarter_pi, 1e-12);
+  EXPECT_NEAR(s.cell_coverage.p50, quarter_pi, 1e-12);
+  EXPECT_LT(s.cell_coverage.sd, 1e-12);
+  EXPECT_TRUE(s.coverage_profile.empty());
+  // Six disks missing, each wholly in its own cell (the 1st percentile is the 6th of 529 cells):
+  // the lowest percentile shows them, the 5th does not.
+  std::vector<fp::Disk> missing;
+  for (std::size_t k = 0; k < shifted.size(); ++k) {
+    const fp::Disk& d = shifted[k];
+    const bool whole = std::fmod(d.centre.x, 8 * r) > 1.1 * r && std::fmod(d.centre.x, 8 * r) < 6.9 * r &&
+                       std::fmod(d.centre.y, 8 * r) > 1.1 * r && std::fmod(d.centre.y, 8 * r) < 6.9 * r;
+    const bool pick = whole && d.centre.y > 0.5 && d.centre.y < 0.54 && d.centre.x > 0.1 && d.centre.x < 0.5 &&
+                      static_cast<int>(d.centre.x / (8 * r)) !=
+                          static_cast<int>(missing.empty() ? -1 : missing.back().centre.x / (8 * r));
+    if (pick && missing.size() < 6) {
+      missing.push_back(d);
+      shifted.erase(shifted.begin() + static_cast<std::ptrdiff_t>(k));
+      --k;
+    }
+  }
+  ASSERT_EQ(missing.size(), 6U);
+  s = fp::measure(domain, shifted, o);
+  EXPECT_NEAR(s.cell_coverage.p1, quarter_pi - std::numbers::pi / 64, 1e-12);
+  EXPECT_NEAR(s.cell_coverage.p5, quarter_pi, 1e-12);
+}

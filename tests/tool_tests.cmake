@@ -196,6 +196,28 @@ set(O ${TOOL_OUT}/stats_json)
 frontpack_tool_check(stats_json 0 "disks: +5 .*fraction: +0\\.2454 overall.*requested: +constant" FILES ${O}/s.json
   JSON ${O}/s.json "command=^stats$" "disks=^5$" "radius/max=^0\\.125$" "packing_fraction=^0\\.245"
   ARGS stats ${SQ} ${TD}/good.csv --radius constant:0.125 --json ${O}/s.json)
+# fill --json carries the measures of holes and seams too.
+set(O ${TOOL_OUT}/fill_json_voids)
+frontpack_tool_check(fill_json_voids 0 "disks: +[1-9][0-9]+" FILES ${O}/s.json
+  JSON ${O}/s.json "largest_empty_circle/radius_over_rmax=^[0-9]" "holes/1/count=^[0-9]+$" "coverage_profile/6/to=^$"
+       "coverage_profile/5/to_rmax=^6(\\.0)?$" "cell_coverage/cell_side=^0\\.[0-9]+" "cell_coverage/cells=^[1-9]"
+  ARGS fill ${SQ} --radius uniform:0.01,0.02 --seed 3 --json ${O}/s.json)
+# stats: the measures of holes and seams, and --hole-radius (repeatable).
+set(O ${TOOL_OUT}/stats_voids)
+frontpack_tool_check(stats_voids 0
+  "empty circle: radius 0\\.[0-9]+ \\(<= 0\\.[0-9]+\\).*holes: +[1-9][0-9]* taking radius 0\\.1, [0-9]+ taking radius 0\\.3.*profile: +0\\.[0-9]+ at 0-1, "
+  FILES ${O}/s.json
+  JSON ${O}/s.json "largest_empty_circle/radius=^0\\.[0-9]+" "largest_empty_circle/radius_upper=^0\\.[0-9]+"
+       "largest_empty_circle/x=^0\\.[0-9]+" "largest_empty_circle/y=^0\\.[0-9]+"
+       "largest_empty_circle/radius_over_rmax=^[0-9]" "holes/0/radius=^0\\.1" "holes/0/count=^[1-9][0-9]*$"
+       "holes/1/radius=^0\\.(3|29999)" "holes/1/count=^[0-9]+$" "coverage_profile/0/from=^0(\\.0)?$" "coverage_profile/0/to=^0\\.125$"
+       "coverage_profile/0/from_rmax=^0(\\.0)?$" "coverage_profile/0/to_rmax=^1(\\.0)?$" "coverage_profile/0/fraction=^0\\."
+       "coverage_profile/0/error=^[0-9]" "coverage_profile/0/samples=^[1-9][0-9]*$" "coverage_profile/6/from_rmax=^6(\\.0)?$"
+       "coverage_profile/6/to=^$" "coverage_profile/6/to_rmax=^$" "cell_coverage/cell_side=^1(\\.0)?$" "cell_coverage/cells=^0$"
+       "cell_coverage/p1=^0(\\.0)?$" "cell_coverage/p5=^0(\\.0)?$" "cell_coverage/p50=^0(\\.0)?$" "cell_coverage/sd=^0(\\.0)?$"
+  ARGS stats ${SQ} ${TD}/good.csv --hole-radius 0.1 --hole-radius 0.3 --json ${O}/s.json)
+frontpack_tool_check(stats_bad_hole_radius 5 "--hole-radius '-1': expected a finite number > 0"
+  ARGS stats ${SQ} ${TD}/good.csv --hole-radius=-1)
 frontpack_tool_check(stats_malformed 7 "malformed_line\\.csv:4:" ARGS stats ${SQ} ${TD}/malformed_line.csv)
 frontpack_tool_check(fill_json_unwritable 2 "cannot write '/nonexistent/dir/s\\.json'"
   NO_FILES ${TOOL_OUT}/fill_json_unwritable/p.csv

@@ -50,27 +50,104 @@ Json sizes_json(const frontpack::SizeStats& s) {
   return j;
 }
 
+void add_void_json(Json& j, const frontpack::PackingStats& s) {
+  const frontpack::EmptyCircle& e = s.largest_empty_circle;
+  if (e.computed) {
+    j["largest_empty_circle"] =
+        Json{{"radius", e.radius},
+             {"radius_upper", e.radius_upper},
+             {"x", e.centre.x},
+             {"y", e.centre.y},
+             {"radius_over_rmax", s.sizes.rmax > 0 ? Json(e.radius / s.sizes.rmax) : Json(nullptr)}};
+  }
+  Json holes = Json::array();
+  for (const frontpack::HoleCount& h : s.holes) {
+    holes.push_back(Json{{"radius", h.radius}, {"count", h.count}});
+  }
+  j["holes"] = holes;
+  Json profile = Json::array();
+  for (const frontpack::CoverageBin& b : s.coverage_profile) {
+    const bool last = std::isinf(b.to);
+    profile.push_back(Json{{"from", b.from},
+                           {"to", last ? Json(nullptr) : Json(b.to)},
+                           {"from_rmax", b.from / s.coverage_unit},
+                           {"to_rmax", last ? Json(nullptr) : Json(b.to / s.coverage_unit)},
+                           {"fraction", b.fraction},
+                           {"error", b.error},
+                           {"samples", b.samples}});
+  }
+  j["coverage_profile"] = profile;
+  const frontpack::CellCoverage& c = s.cell_coverage;
+  j["cell_coverage"] =
+      Json{{"cell_side", c.cell_side}, {"cells", c.cells}, {"p1", c.p1}, {"p5", c.p5}, {"p50", c.p50}, {"sd", c.sd}};
+}
+
 }  // namespace
 
 Json stats_json(const frontpack::PackingStats& s) {
-  return Json{{"packing_fraction", s.packing_fraction},
-              {"interior_fraction", s.interior_fraction},
-              {"interior_fraction_error", s.interior_error},
-              {"band_fraction", s.band_fraction},
-              {"band_fraction_error", s.band_error},
-              {"band_width", s.band_width},
-              {"void_ratio", std::isfinite(s.void_ratio) ? Json(s.void_ratio) : Json(nullptr)},
-              {"mean_coordination", s.mean_coordination},
-              {"interior_coordination", s.interior_coordination},
-              {"contacts", s.contacts},
-              {"wall_contacts", s.wall_contacts},
-              {"rattlers", s.rattlers},
-              {"contact_gap", s.contact_gap},
-              {"band_disks", s.band_disks},
-              {"band_median_by_area", s.band_median_area},
-              {"inside_median_by_area", s.inside_median_area},
-              {"segregation_ks_by_area", s.segregation_ks_area},
-              {"radius", sizes_json(s.sizes)}};
+  Json j{{"packing_fraction", s.packing_fraction},
+         {"interior_fraction", s.interior_fraction},
+         {"interior_fraction_error", s.interior_error},
+         {"band_fraction", s.band_fraction},
+         {"band_fraction_error", s.band_error},
+         {"band_width", s.band_width},
+         {"void_ratio", std::isfinite(s.void_ratio) ? Json(s.void_ratio) : Json(nullptr)},
+         {"mean_coordination", s.mean_coordination},
+         {"interior_coordination", s.interior_coordination},
+         {"contacts", s.contacts},
+         {"wall_contacts", s.wall_contacts},
+         {"rattlers", s.rattlers},
+         {"contact_gap", s.contact_gap},
+         {"band_disks", s.band_disks},
+         {"band_median_by_area", s.band_median_area},
+         {"inside_median_by_area", s.inside_median_area},
+         {"segregation_ks_by_area", s.segregation_ks_area},
+         {"radius", sizes_json(s.sizes)}};
+  add_void_json(j, s);
+  return j;
+}
+
+std::vector<std::string> void_lines(const frontpack::PackingStats& s) {
+  std::vector<std::string> lines;
+  const frontpack::EmptyCircle& e = s.largest_empty_circle;
+  if (e.computed) {
+    std::string line = "empty circle: radius " + fmt(e.radius) + " (<= " + fmt(e.radius_upper) + ")";
+    if (s.sizes.rmax > 0) {
+      line += ", " + fmt4(e.radius / s.sizes.rmax) + " rmax";
+    }
+    lines.push_back(line + ", at (" + fmt(e.centre.x) + ", " + fmt(e.centre.y) + ")");
+  }
+  if (!s.holes.empty()) {
+    std::string line = "holes:        ";
+    for (std::size_t k = 0; k < s.holes.size(); ++k) {
+      line.append(k == 0 ? "" : ", ").append(std::to_string(s.holes[k].count));
+      line.append(" taking radius ").append(fmt(s.holes[k].radius));
+    }
+    lines.push_back(line);
+  }
+  if (!s.coverage_profile.empty()) {
+    std::string line = "profile:      ";
+    for (std::size_t k = 0; k < s.coverage_profile.size(); ++k) {
+      const frontpack::CoverageBin& b = s.coverage_profile[k];
+      line.append(k == 0 ? "" : ", ")
+          .append(b.samples == 0 ? std::string("none") : fmt4(b.fraction))
+          .append(" at ")
+          .append(fmt(b.from / s.coverage_unit));
+      if (std::isinf(b.to)) {
+        line.append("+");
+      } else {
+        line.append("-").append(fmt(b.to / s.coverage_unit));
+      }
+    }
+    lines.push_back(line + " rmax from the boundary");
+  }
+  const frontpack::CellCoverage& c = s.cell_coverage;
+  if (c.cells > 0) {
+    lines.push_back("cells:        " + std::to_string(c.cells) + " interior cells of side " + fmt(c.cell_side) +
+                    " (8 rmax): coverage p1 " + fmt4(c.p1) + ", p5 " + fmt4(c.p5) + ", median " + fmt4(c.p50) +
+                    ", sd " + fmt4(c.sd));
+  }
+  return lines;
 }
 
 std::string fraction_line(const frontpack::PackingStats& s) {

@@ -5,6 +5,7 @@
 #include <chrono>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <vector>
 
 #include "frontpack/domain.hpp"
 #include "frontpack/fill.hpp"
@@ -22,7 +23,11 @@ using Clock = std::chrono::steady_clock;
 [[nodiscard]] std::string fmt4(double v);
 
 [[nodiscard]] Json domain_json(const std::string& source, const frontpack::Domain& domain);
+/// The statistics, with "largest_empty_circle" (when computed), "holes", "coverage_profile" (the
+/// last bin's "to" null) and "cell_coverage".
 [[nodiscard]] Json stats_json(const frontpack::PackingStats& s);
+/// The text report's lines for the same measures ("empty circle: ...", "holes: ...", ...).
+[[nodiscard]] std::vector<std::string> void_lines(const frontpack::PackingStats& s);
 /// "0.8123 overall, 0.8300 interior (+/- 0.0010, farther than 0.1 from the boundary), ..."
 [[nodiscard]] std::string fraction_line(const frontpack::PackingStats& s);
 /// "min 0.01, mean 0.03, max 0.05, sd ..., median by area ..."

@@ -1,5 +1,7 @@
 #include "domain/edge_distance.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <utility>
 
 namespace frontpack::detail {
@@ -55,6 +57,86 @@ EdgeDistanceIndex::EdgeDistanceIndex(const Domain& domain, double h) {
   for (std::size_t c = 0; c < nx_ * ny_; ++c) {
     start_[c + 1] += start_[c];
   }
+  // Chessboard distance transform in two passes (exact for the Chebyshev metric: each pass takes
+  // the minimum over the four neighbours already visited).
+  empty_rings_.assign(nx_ * ny_, 255);
+  for (std::size_t c = 0; c < nx_ * ny_; ++c) {
+    if (start_[c + 1] > start_[c]) {
+      empty_rings_[c] = 0;
+    }
+  }
+  const auto relax = [this](std::size_t c, std::size_t i, std::size_t j, long di, long dj) {
+    const long ni = static_cast<long>(i) + di;
+    const long nj = static_cast<long>(j) + dj;
+    if (ni < 0 || nj < 0 || ni >= static_cast<long>(nx_) || nj >= static_cast<long>(ny_)) {
+      return;
+    }
+    const std::uint8_t v = empty_rings_[static_cast<std::size_t>(nj) * nx_ + static_cast<std::size_t>(ni)];
+    empty_rings_[c] = std::min<std::uint8_t>(empty_rings_[c], v == 255 ? 255 : static_cast<std::uint8_t>(v + 1));
+  };
+  for (std::size_t j = 0; j < ny_; ++j) {
+    for (std::size_t i = 0; i < nx_; ++i) {
+      const std::size_t c = j * nx_ + i;
+      relax(c, i, j, -1, 0);
+      relax(c, i, j, -1, -1);
+      relax(c, i, j, 0, -1);
+      relax(c, i, j, 1, -1);
+    }
+  }
+  for (std::size_t j = ny_; j-- > 0;) {
+    for (std::size_t i = nx_; i-- > 0;) {
+      const std::size_t c = j * nx_ + i;
+      relax(c, i, j, 1, 0);
+      relax(c, i, j, 1, 1);
+      relax(c, i, j, 0, 1);
+      relax(c, i, j, -1, 1);
+    }
+  }
+}
+
+double EdgeDistanceIndex::distance(Point p, double cap) const {
+  const std::size_t ci = column(p.x);
+  const std::size_t cj = row(p.y);
+  const std::size_t first = empty_rings_[cj * nx_ + ci];
+  if (first >= 1 && static_cast<double>(first - 1) * h_ >= cap) {
+    return cap;
+  }
+  double best = cap;
+  const std::size_t reach = std::max(nx_, ny_);
+  for (std::size_t k = first; k <= reach; ++k) {
+    // Ring k: the cells (i, j) with max(|i - ci|, |j - cj|) == k, clipped to the grid.
+    const std::size_t i0 = ci >= k ? ci - k : 0;
+    const std::size_t i1 = std::min(ci + k, nx_ - 1);
+    const std::size_t j0 = cj >= k ? cj - k : 0;
+    const std::size_t j1 = std::min(cj + k, ny_ - 1);
+    const auto visit = [&](std::size_t i, std::size_t j) {
+      const std::size_t c = j * nx_ + i;
+      for (std::size_t e = start_[c]; e < start_[c + 1]; ++e) {
+        const Point q = closest(edges_[e], p);
+        best = std::min(best, std::hypot(q.x - p.x, q.y - p.y));
+      }
+    };
+    for (std::size_t j = j0; j <= j1; ++j) {
+      if (j + k == cj || j == cj + k) {
+        for (std::size_t i = i0; i <= i1; ++i) {
+          visit(i, j);
+        }
+      } else {
+        if (ci >= k) {
+          visit(ci - k, j);
+        }
+        if (ci + k < nx_) {
+          visit(ci + k, j);
+        }
+      }
+    }
+    // Every edge not yet seen lies outside the (2k + 1)-cell block around p's cell: farther than
+    // k h from p (a millionth of a cell spared for the rounding of p's cell index).
+    if (best <= (static_cast<double>(k) - 1e-6) * h_) {
+      break;
+    }
+  }
+  return best;
 }
 
 }  // namespace frontpack::detail

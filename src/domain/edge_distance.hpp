@@ -41,6 +41,11 @@ class EdgeDistanceIndex {
     }
   }
 
+  /// min(cap, the distance from p to the nearest edge), for cap > 0: the cells are visited in
+  /// rings around p's cell, from the first ring that lists an edge (a distance transform of the
+  /// grid says which), until the rings left are farther than the nearest edge found.
+  [[nodiscard]] double distance(Point p, double cap) const;
+
   /// Whether the boundary comes closer than d to p.
   [[nodiscard]] bool closer_than(Point p, double d) const {
     bool found = false;
@@ -78,6 +83,9 @@ class EdgeDistanceIndex {
   std::size_t ny_ = 1;
   std::vector<std::size_t> start_;
   std::vector<std::uint32_t> edges_;
+  // Per cell, the Chebyshev distance in cells to the nearest cell that lists an edge (at most
+  // 255): every point of the cell is at least (value - 1) h from every edge.
+  std::vector<std::uint8_t> empty_rings_;
 };
 
 }  // namespace frontpack::detail

@@ -1,5 +1,7 @@
 // The parts of measure() (include/frontpack/stats.hpp), one file each: stratified sampling of the
-// fractions (sampling.cpp), contacts (contacts.cpp), size statistics (sizes.cpp, histogram.cpp).
+// fractions and the coverage profile (sampling.cpp), contacts (contacts.cpp), size statistics
+// (sizes.cpp, histogram.cpp), the largest empty circle (empty_circle.cpp) and the hole counts
+// (holes.cpp) on the clearance field (clearance.hpp), the cell coverage (coverage.cpp).
 #pragma once
 
 #include <cmath>
@@ -39,9 +41,26 @@ void count_contacts(std::span<const Disk> disks, double tol, PackingStats& s, st
 std::size_t wall_contacts(const EdgeDistanceIndex& edges, const Disk& d, double tol);
 
 /// The interior and band fractions by stratified sampling of about `samples` points, the band
-/// being the points within w of the boundary.
+/// being the points within w of the boundary; with unit > 0 also the coverage profile in bins of
+/// `unit` (s.coverage_unit, s.coverage_profile).
 void sample_fractions(const Domain& domain, std::span<const Disk> disks, const EdgeDistanceIndex& edges, double w,
-                      std::size_t samples, PackingStats& s, const std::stop_token& stop);
+                      std::size_t samples, double unit, PackingStats& s, const std::stop_token& stop);
+
+class Clearance;
+
+/// The largest empty circle, to within `tolerance` (empty_circle.cpp); `upper` receives an upper
+/// bound of f on each grid cell of f.
+EmptyCircle largest_empty_circle(const Clearance& f, double tolerance, std::vector<double>& upper,
+                                 const std::stop_token& stop);
+
+/// The number of holes that take a disk of radius rho (holes.cpp). `cell_upper`: upper bounds
+/// of f on the grid cells of f (largest_empty_circle()'s), or empty.
+std::size_t count_holes(const Clearance& f, double rho, std::span<const double> cell_upper,
+                        const std::stop_token& stop);
+
+/// The coverage of the interior cells of side 8 rmax (coverage.cpp).
+void measure_cell_coverage(const Domain& domain, std::span<const Disk> disks, const EdgeDistanceIndex& edges, double w,
+                           double rmax, CellCoverage& out, const std::stop_token& stop);
 
 /// The radius with half of the area (sum of r^2) at or below it; sorts r. 0 for none.
 double median_by_area(std::vector<double>& r);

@@ -1,8 +1,10 @@
 // The interior and band fractions by stratified sampling (floating point: measurements; point
 // location in the domain is exact, via Domain).
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 
 #include "common/grid_cells.hpp"
 #include "common/rng.hpp"
@@ -23,8 +25,11 @@ double unit(std::uint64_t h) noexcept {
 // box, at a hashed position in its cell (independently in x and y, so that the estimate is a
 // stratified one, never worse than independent points). Rows of cells are swept upwards; the
 // disks meeting the row are kept in an active list (disks sorted by their lowest y).
+//
+// The same points give the coverage profile: each point's distance to the boundary, as far as
+// 6 units, puts it in the bin [k, k + 1) units (k = 0..5) or in the last bin.
 void sample_fractions(const Domain& domain, std::span<const Disk> disks, const EdgeDistanceIndex& edges, double w,
-                      std::size_t samples, PackingStats& s, const std::stop_token& stop) {
+                      std::size_t samples, double bin_unit, PackingStats& s, const std::stop_token& stop) {
   const Box b = domain.bbox();
   const double area = b.width() * b.height();
   if (samples == 0 || !(area > 0)) {
@@ -54,6 +59,11 @@ void sample_fractions(const Domain& domain, std::span<const Disk> disks, const E
   std::size_t c_int = 0;
   std::size_t n_band = 0;
   std::size_t c_band = 0;
+  constexpr std::size_t kBins = 7;
+  const bool profile = bin_unit > 0 && std::isfinite(6 * bin_unit);
+  const double cap = profile ? std::max(w, 6 * bin_unit) : w;
+  std::array<std::size_t, kBins> n_bin{};
+  std::array<std::size_t, kBins> c_bin{};
   for (std::size_t j = 0; j < ny; ++j) {
     detail::throw_if_stopped(stop);
     const double y0 = b.ymin + static_cast<double>(j) * sy;
@@ -93,7 +103,14 @@ void sample_fractions(const Domain& domain, std::span<const Disk> disks, const E
       if (domain.locate(p) == Location::outside) {
         continue;
       }
-      if (edges.closer_than(p, w)) {
+      const double d = edges.distance(p, cap);
+      if (profile) {
+        const double k = std::floor(d / bin_unit);
+        const std::size_t bin = k < static_cast<double>(kBins - 1) ? static_cast<std::size_t>(k) : kBins - 1;
+        ++n_bin[bin];
+        c_bin[bin] += covered[i];
+      }
+      if (d < w) {
         ++n_band;
         c_band += covered[i];
       } else {
@@ -117,6 +134,18 @@ void sample_fractions(const Domain& domain, std::span<const Disk> disks, const E
   s.band_error = error(s.band_fraction, n_band);
   s.interior_area = static_cast<double>(n_int) * cell;
   s.band_area = static_cast<double>(n_band) * cell;
+  if (profile) {
+    s.coverage_unit = bin_unit;
+    for (std::size_t k = 0; k < kBins; ++k) {
+      CoverageBin bin;
+      bin.from = static_cast<double>(k) * bin_unit;
+      bin.to = k + 1 < kBins ? static_cast<double>(k + 1) * bin_unit : std::numeric_limits<double>::infinity();
+      bin.samples = n_bin[k];
+      bin.fraction = fraction(c_bin[k], n_bin[k]);
+      bin.error = error(bin.fraction, n_bin[k]);
+      s.coverage_profile.push_back(bin);
+    }
+  }
 }
 
 }  // namespace frontpack::detail

@@ -16,6 +16,7 @@
 
 #include "common/format.hpp"
 #include "common/stop.hpp"
+#include "stats/clearance.hpp"
 #include "stats/parts.hpp"
 
 namespace frontpack {
@@ -52,6 +53,9 @@ PackingStats measure_scaled(const Domain& domain, std::span<const Disk> disks, c
   StatsOptions o = options;
   o.contact_gap *= k;
   o.band_width *= k;
+  for (double& rho : o.hole_radii) {
+    rho *= k;
+  }
   PackingStats s = measure(Domain::from_polygons(std::move(polygons)), scaled, o);
   const double inv = 1 / k;
   s.domain_area = domain.area();
@@ -69,9 +73,58 @@ PackingStats measure_scaled(const Domain& domain, std::span<const Disk> disks, c
   s.band_area *= inv * inv;
   s.band_median_area *= inv;
   s.inside_median_area *= inv;
+  EmptyCircle& e = s.largest_empty_circle;
+  e.radius *= inv;
+  e.radius_upper *= inv;
+  e.tolerance *= inv;
+  e.centre = {e.centre.x * inv, e.centre.y * inv};
+  for (HoleCount& h : s.holes) {
+    h.radius *= inv;
+  }
+  s.coverage_unit *= inv;
+  for (CoverageBin& bin : s.coverage_profile) {
+    bin.from *= inv;
+    bin.to *= inv;
+  }
+  s.cell_coverage.cell_side *= inv;
   s.sizes =
       measure_sizes(radii, options.requested ? &options.requested->distribution() : nullptr, options.histogram_bins);
   return s;
+}
+
+// The largest empty circle, the holes and the cell coverage.
+void measure_voids(const Domain& domain, std::span<const Disk> disks, const EdgeDistanceIndex& edges,
+                   const StatsOptions& options, PackingStats& s) {
+  std::vector<double> radii = options.hole_radii;
+  if (radii.empty() && !disks.empty()) {
+    radii = {s.sizes.median_number, s.sizes.rmax};
+  }
+  const bool holes = options.holes && !radii.empty();
+  if (options.empty_circle || holes) {
+    const detail::Clearance f(domain, disks, edges);
+    const Box b = domain.bbox();
+    // 1% of the smallest radius; without disks a millionth of the domain's size.
+    const double tolerance = disks.empty() ? 1e-6 * std::max(b.width(), b.height()) : 0.01 * s.sizes.rmin;
+    std::vector<double> cell_upper;  // stays empty without the empty circle
+    if (options.empty_circle) {
+      s.largest_empty_circle = detail::largest_empty_circle(f, tolerance, cell_upper, options.stop);
+    }
+    if (holes) {
+      for (const double rho : radii) {
+        // No hole takes a disk larger than the largest empty circle.
+        const bool none =
+            s.largest_empty_circle.computed ? rho > s.largest_empty_circle.radius_upper : options.empty_circle;
+        if (!s.holes.empty() && s.holes.back().radius == rho) {
+          s.holes.push_back(s.holes.back());  // (the default radii of equal disks)
+          continue;
+        }
+        s.holes.push_back({rho, none ? 0 : detail::count_holes(f, rho, cell_upper, options.stop)});
+      }
+    }
+  }
+  if (options.cell_coverage && !disks.empty()) {
+    detail::measure_cell_coverage(domain, disks, edges, s.band_width, s.sizes.rmax, s.cell_coverage, options.stop);
+  }
 }
 
 }  // namespace
@@ -120,7 +173,8 @@ PackingStats measure(const Domain& domain, std::span<const Disk> disks, const St
                                                      std::numeric_limits<double>::max()));  // (finite for any radius)
   const double w = s.band_width;
   const EdgeDistanceIndex edges(domain, w > 0 ? w : std::sqrt(domain.area()) / 64);
-  sample_fractions(domain, disks, edges, w, options.samples, s, options.stop);
+  sample_fractions(domain, disks, edges, w, options.samples, options.coverage_profile ? rmax : 0, s, options.stop);
+  measure_voids(domain, disks, edges, options, s);
   if (disks.empty()) {
     return s;
   }

@@ -30,8 +30,20 @@ struct StatsArgs {
   std::string radius;
   std::string json;
   std::string samples = "1000000";
+  std::vector<std::string> hole_radii;
   bool quiet = false;
 };
+
+// A radius for OPTION: one decimal number (C locale, read with correct rounding), finite and > 0.
+double parse_radius(const char* option, const std::string& text) {
+  double value = 0;
+  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (ec != std::errc{} || end != text.data() + text.size() || !std::isfinite(value) || !(value > 0)) {
+    const std::string given = text.size() > 40 ? text.substr(0, 40) + "..." : text;
+    throw frontpack::OptionError(std::string(option) + " '" + given + "': expected a finite number > 0");
+  }
+  return value;
+}
 
 int run_stats(const StatsArgs& a) {
   frontpack::StatsOptions options;
@@ -41,6 +53,9 @@ int run_stats(const StatsArgs& a) {
     add_curve_input(a.radius, inputs);
   }
   options.samples = parse_count("--samples", a.samples, std::uint64_t{1} << 40);
+  for (const std::string& r : a.hole_radii) {
+    options.hole_radii.push_back(parse_radius("--hole-radius", r));
+  }
   options.stop = stop_token();
   frontpack_tool::check_files(inputs, output_uses({}, a.json));
   const frontpack::Domain domain = frontpack::Domain::from_wkt_file(a.domain);
@@ -77,6 +92,9 @@ int run_stats(const StatsArgs& a) {
               << " disks), " << fmt(s.inside_median_area) << " inside; KS by area " << fmt4(s.segregation_ks_area)
               << "\n";
   }
+  for (const std::string& line : frontpack_tool::void_lines(s)) {
+    std::cout << line << "\n";
+  }
   return ok;
 }
 
@@ -89,6 +107,9 @@ Command add_stats(CLI::App& app) {
   cmd->add_option("--radius", args->radius, "compare the radii with this requested distribution");
   cmd->add_option("--samples", args->samples, "sample points for the interior and band fractions")
       ->capture_default_str();
+  cmd->add_option("--hole-radius", args->hole_radii,
+                  "count the holes that take a disk of this radius (repeatable; default: the median radius by number "
+                  "and the largest)");
   cmd->add_option("--json", args->json, "write the statistics as JSON to this file");
   cmd->add_flag("-q,--quiet", args->quiet, "print nothing but errors");
   cmd->footer(

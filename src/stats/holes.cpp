@@ -1,0 +1,173 @@
+// Holes that take a disk of radius rho: the connected components of {f >= rho} (f the clearance,
+// stats/clearance.hpp), resolved on the leaves of a quadtree over the clearance grid's cells.
+//
+// A square is dropped when f < rho on it (its upper bound), kept whole when f >= rho on it (the
+// centre's certain value minus the half-diagonal), and split otherwise, down to a half-diagonal
+// of rho / 32. The kept squares (leaves) cover {f >= rho}, and every point of the domain in a
+// leaf has f >= rho - 2 rho / 32 (a leaf's upper bound is at most its centre's value plus its
+// half-diagonal). The count is that of the connected components of the union of the closed
+// leaves (squares touching at an edge or a corner are joined) that hold a leaf whose centre is
+// certified to have f >= rho: a hole where a disk of radius rho (1 + 1/32) fits is never
+// missed, and two holes are counted as one only when {f >= rho (1 - 1/16)} joins them.
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <numeric>
+#include <vector>
+
+#include "common/stop.hpp"
+#include "stats/clearance.hpp"
+#include "stats/parts.hpp"
+
+namespace frontpack::detail {
+
+namespace {
+
+// Leaf coordinates stay below 2^62: 2^24 grid cells per axis, halved at most 38 times.
+constexpr int kMaxDepth = 38;
+
+// A leaf: depth below its grid cell and coordinates in the squares of that depth over the whole
+// grid (grid cell (i, j) at depth d spans x in [i 2^d, (i + 1) 2^d)).
+struct Leaf {
+  int depth;
+  std::int64_t x;
+  std::int64_t y;
+  bool certified;
+  [[nodiscard]] bool operator<(const Leaf& o) const noexcept {
+    return depth != o.depth ? depth < o.depth : x != o.x ? x < o.x : y < o.y;
+  }
+};
+
+class HoleSearch {
+ public:
+  HoleSearch(const Clearance& f, double rho)
+      : f_(f), rho_(rho), delta_(rho / 32), lists_(kMaxDepth + 1), first_(f.nx() * f.ny() + 1, 0) {}
+
+  // A grid cell known to hold no point with f >= rho.
+  void skip_cell(std::size_t c) { first_[c + 1] = leaves_.size(); }
+
+  // The leaves of grid cell c (cells in increasing order), sorted for lookups.
+  void visit_cell(std::size_t c, std::span<const std::uint32_t> block) {
+    const std::size_t i = c % f_.nx();
+    const std::size_t j = c / f_.nx();
+    const std::size_t begin = leaves_.size();
+    visit(f_.cell(i, j), block, Side::unknown, 0, static_cast<std::int64_t>(i), static_cast<std::int64_t>(j));
+    std::sort(leaves_.begin() + static_cast<std::ptrdiff_t>(begin), leaves_.end());
+    first_[c + 1] = leaves_.size();
+  }
+
+  void visit(const Square& q, std::span<const std::uint32_t> list, Side side, int depth, std::int64_t x,
+             std::int64_t y) {
+    std::vector<std::uint32_t>& keep = lists_[static_cast<std::size_t>(depth)];
+    const SquareBounds b = f_.bound(q, list, side, rho_, &keep);
+    if (b.pruned) {
+      return;
+    }
+    const double hd = q.half_diagonal();
+    const bool full = b.certain && b.value - hd >= rho_;
+    if (full || hd <= delta_ || depth == kMaxDepth) {
+      leaves_.push_back({depth, x, y, full || (b.certain && b.value >= rho_)});
+      return;
+    }
+    const double a = q.a / 2;
+    for (const auto& [sx, sy] : {std::pair{0, 0}, std::pair{1, 0}, std::pair{0, 1}, std::pair{1, 1}}) {
+      visit(Square{q.x + (2 * sx - 1) * a, q.y + (2 * sy - 1) * a, a}, keep, b.side, depth + 1, 2 * x + sx, 2 * y + sy);
+    }
+  }
+
+  // Union-find over the leaves. Each leaf looks up the 8 squares of its own size around it and
+  // their ancestors: a leaf it touches that is as large or larger holds one of them, and a
+  // smaller one finds it the same way.
+  [[nodiscard]] std::size_t components(const std::stop_token& stop) {
+    std::vector<std::uint32_t> parent(leaves_.size());
+    std::iota(parent.begin(), parent.end(), 0U);
+    const auto find = [&parent](std::uint32_t a) {
+      while (parent[a] != a) {
+        parent[a] = parent[parent[a]];
+        a = parent[a];
+      }
+      return a;
+    };
+    for (std::size_t k = 0; k < leaves_.size(); ++k) {
+      throw_if_stopped(stop, k);
+      const Leaf& leaf = leaves_[k];
+      for (int dy = -1; dy <= 1; ++dy) {
+        for (int dx = -1; dx <= 1; ++dx) {
+          if (dx == 0 && dy == 0) {
+            continue;
+          }
+          std::int64_t x = leaf.x + dx;
+          std::int64_t y = leaf.y + dy;
+          std::int64_t ox = leaf.x;
+          std::int64_t oy = leaf.y;
+          // Up to the first ancestor shared with the leaf itself (a leaf has no leaf above it).
+          for (int d = leaf.depth; d >= 0 && x >= 0 && y >= 0 && (x != ox || y != oy);
+               --d, x >>= 1, y >>= 1, ox >>= 1, oy >>= 1) {
+            if (const std::size_t at = find_leaf(d, x, y); at != kNone) {
+              const std::uint32_t a = find(static_cast<std::uint32_t>(k));
+              const std::uint32_t b = find(static_cast<std::uint32_t>(at));
+              parent[std::max(a, b)] = std::min(a, b);
+              break;
+            }
+          }
+        }
+      }
+    }
+    std::vector<std::uint8_t> counted(leaves_.size(), 0);
+    for (std::size_t k = 0; k < leaves_.size(); ++k) {
+      if (leaves_[k].certified) {
+        counted[find(static_cast<std::uint32_t>(k))] = 1;
+      }
+    }
+    return static_cast<std::size_t>(std::count(counted.begin(), counted.end(), std::uint8_t{1}));
+  }
+
+ private:
+  const Clearance& f_;
+  double rho_;
+  double delta_;
+  std::vector<std::vector<std::uint32_t>> lists_;
+  std::vector<Leaf> leaves_;        // grid cell by grid cell, each cell's sorted
+  std::vector<std::size_t> first_;  // grid cell c's leaves: [first_[c], first_[c + 1])
+
+  static constexpr std::size_t kNone = ~std::size_t{0};
+
+  // The leaf with these coordinates, if any: a binary search among its grid cell's leaves.
+  [[nodiscard]] std::size_t find_leaf(int depth, std::int64_t x, std::int64_t y) const {
+    const std::int64_t i = x >> depth;
+    const std::int64_t j = y >> depth;
+    if (i >= static_cast<std::int64_t>(f_.nx()) || j >= static_cast<std::int64_t>(f_.ny())) {
+      return kNone;
+    }
+    const std::size_t c = static_cast<std::size_t>(j) * f_.nx() + static_cast<std::size_t>(i);
+    const auto begin = leaves_.begin() + static_cast<std::ptrdiff_t>(first_[c]);
+    const auto end = leaves_.begin() + static_cast<std::ptrdiff_t>(first_[c + 1]);
+    const Leaf key{depth, x, y, false};
+    const auto it = std::lower_bound(begin, end, key);
+    return it != end && it->depth == depth && it->x == x && it->y == y ? static_cast<std::size_t>(it - leaves_.begin())
+                                                                       : kNone;
+  }
+};
+
+}  // namespace
+
+std::size_t count_holes(const Clearance& f, double rho, std::span<const double> cell_upper,
+                        const std::stop_token& stop) {
+  if (!(rho > 0)) {
+    return 0;
+  }
+  HoleSearch search(f, rho);
+  std::vector<std::uint32_t> list;
+  for (std::size_t c = 0; c < f.nx() * f.ny(); ++c) {
+    throw_if_stopped(stop, c);
+    if (!cell_upper.empty() && cell_upper[c] < rho) {
+      search.skip_cell(c);
+      continue;
+    }
+    f.block(c % f.nx(), c / f.nx(), list);
+    search.visit_cell(c, list);
+  }
+  return search.components(stop);
+}
+
+}  // namespace frontpack::detail
