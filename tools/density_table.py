@@ -227,7 +227,7 @@ def size_specs(area, disks):
     r = base(math.exp(2 * s * s))
     specs.append(("lognormal GSD 1.5", "lognormal:%s,1.5" % fmt_num(r)))
     for k in (3, 10):
-        r = base((k - 1) / math.log(k))  # uniform by area on [r, k r]: E[r^2] = (k - 1) r^2 / ln k
+        r = base(k)  # uniform by area on [r, k r]: number density ~ 1 / r^2, so E[r^2] = k r^2
         specs.append(("uniform by area %g" % k, area_uniform_curve(r, k * r)))
     return specs
 
