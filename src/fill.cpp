@@ -93,6 +93,7 @@ Packing run_fill(const Domain& domain, const FillOptions& options,
     req.memory_limit = memory_bytes;
     req.fill_voids = options.fill_voids;
     req.tick = meter.tick();
+    req.stop = options.stop;
     detail::FrontResult result;
     if (options.method == Method::boundary) {
       result = detail::advance_boundary(req, domain.polygons()[p], rng, raw, packing.stats);

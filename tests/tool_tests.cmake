@@ -86,7 +86,7 @@ frontpack_tool_check(fill_all_formats 0
   JSON ${O}/s.json "command=^fill$" "method=^boundary$" "seed=^7$" "disks=^[1-9][0-9]+$"
        "packing_fraction=^0\\.[6-9]" "interior_fraction=^0\\.[6-9]" "radius/min=^0\\.0" "radius/mean=^0\\.0"
        "certificate/certified=^ON$" "certificate/culled=^0$" "certificate/dropped=^0$" "certificate/exact=^ON$" "domain/holes=^7$"
-       "seconds/total=^[0-9]" "outputs/6/format=^png$" "generation/skipped_radii=^[0-9]+$" "generation/attempts=^[1-9]"
+       "seconds/total=^[0-9]" "outputs/6/format=^png$" "generation/skipped_radii=^[0-9]+$" "generation/cavities=^[0-9]+$" "generation/attempts=^[1-9]"
   ARGS fill ${S}/plate_with_holes.wkt --radius uniform:0.01,0.04 --seed 7 --width 401 -o ${O}/p.csv -o ${O}/p.txt
        -o ${O}/p.data -o ${O}/p.vtp -o ${O}/p.svg -o ${O}/p.pdf -o ${O}/p.png --json ${O}/s.json)
 set(O ${TOOL_OUT}/fill_no_histogram)

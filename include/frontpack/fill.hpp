@@ -111,6 +111,8 @@ struct FillStats {
   /// Radii drawn at the end of a boundary run, when the front was done, that fitted none of the
   /// voids left and were not placed (at most 1% of the disks; docs/boundary-method.md).
   std::size_t skipped_radii = 0;
+  /// Points of cavities found after a boundary run's front, each given a void (docs/boundary-method.md).
+  std::size_t cavities = 0;
   double seconds_front = 0;    ///< wall time of the advancing front (generation)
   double seconds_cull = 0;     ///< wall time of the exact containment pass
   double seconds_overlap = 0;  ///< wall time of the global overlap pass

@@ -112,7 +112,8 @@ Json fill_json(const FillArgs& a, const std::string& spec, const frontpack::Fill
   j["generation"] = Json{{"attempts", p.stats.attempts},
                          {"cuts", p.stats.cuts},
                          {"void_fills", p.stats.void_fills},
-                         {"skipped_radii", p.stats.skipped_radii}};
+                         {"skipped_radii", p.stats.skipped_radii},
+                         {"cavities", p.stats.cavities}};
   j["seconds"] = Json{{"front", p.stats.seconds_front},
                       {"cull", p.stats.seconds_cull},
                       {"overlap_pass", p.stats.seconds_overlap},

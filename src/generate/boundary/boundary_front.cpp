@@ -21,6 +21,7 @@
 
 #include "common/packing_density.hpp"
 #include "generate/acceptance.hpp"
+#include "generate/boundary/cavities.hpp"
 #include "generate/boundary/elements.hpp"
 #include "generate/boundary/obstacles.hpp"
 #include "generate/boundary/pocket.hpp"
@@ -157,6 +158,12 @@ class BoundaryFront {
           cls = class_of(r);
           continue;
         }
+        if (!cavities_searched_ && req_.fill_voids) {
+          cavities_searched_ = true;
+          if (find_cavities()) {
+            continue;
+          }
+        }
         if (skipped_ < (placed() - out_before_) / kSkipPer && !(voids_[0].empty() && voids_[1].empty())) {
           // The voids left where the fronts met last (a seam of 0.71 against 0.87 around) take
           // the radii that fit them; a radius that fits none is skipped, up to 1 in kSkipPer.
@@ -269,6 +276,17 @@ class BoundaryFront {
           (is_wall(g.a) && rough_[wall_index(g.a)] != 0) || (is_wall(g.b) && rough_[wall_index(g.b)] != 0) ? 1 : 0;
       voids_[side].push(k, g);
     }
+  }
+
+  // Cavities the fronts closed around (cavities.hpp): each point found gets a void. Returns
+  // whether one was kept.
+  bool find_cavities() {
+    const std::vector<Gap> found = cavity_gaps(obstacles_, elements_, frame_, placed() - out_before_, req_.stop);
+    for (const Gap& g : found) {
+      keep_void(g, kClasses - 1, kNone, -1);
+    }
+    stats_.cavities += found.size();
+    return !found.empty();
   }
 
   // ------------------------------------------------------------------------------------------
@@ -526,6 +544,7 @@ class BoundaryFront {
   double polygon_area_ = 0;  // shoelace, for the seeding rule
   int seeds_ = 0;
   std::size_t skipped_ = 0;
+  bool cavities_searched_ = false;
 
   Elements elements_;  // walls, reflex vertices, disks
 

@@ -16,6 +16,7 @@
 // everywhere else, and the certifier decides containment exactly.)
 #pragma once
 
+#include <array>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -64,6 +65,33 @@ class Obstacles {
   /// The wall nearest to (x, y) (wall_index.hpp).
   std::int32_t nearest(double x, double y, double& d2, std::int32_t best) const noexcept {
     return index_.nearest(x, y, d2, best);
+  }
+
+  // The two disks whose surfaces lie nearest (x, y) (least |p - c| - r), among those whose
+  // centres lie within reach + rmax of it; kNoElement for each that is missing. Of two as near,
+  // the older. For the cavity pass (boundary_front.cpp): once, after the front.
+  [[nodiscard]] std::array<std::int32_t, 2> nearest_disks(const Elements& el, double x, double y, double reach) const {
+    std::array<std::int32_t, 2> best{kNoElement, kNoElement};
+    std::array<double, 2> gap{0, 0};
+    const double r_reach = reach + rmax_;
+    visit_cells(head_cell_.data(), grid_.nx, el.nodes(), kNoElement, probe_col(x - r_reach), probe_col(x + r_reach),
+                probe_row(y - r_reach), probe_row(y + r_reach), [&](std::int32_t d, const BoundaryNode& o) {
+                  const double g = std::sqrt((o.x - x) * (o.x - x) + (o.y - y) * (o.y - y)) - o.r;
+                  const auto nearer = [&](std::size_t i) {
+                    return best[i] == kNoElement || g < gap[i] || (g == gap[i] && d < best[i]);
+                  };
+                  if (nearer(0)) {
+                    best[1] = best[0];
+                    gap[1] = gap[0];
+                    best[0] = d;
+                    gap[0] = g;
+                  } else if (nearer(1)) {
+                    best[1] = d;
+                    gap[1] = g;
+                  }
+                  return false;
+                });
+    return best;
   }
 
   // The element the candidate overlaps most deeply (a disk or a wall; a reflex vertex is no
