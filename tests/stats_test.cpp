@@ -20,6 +20,18 @@ fp::Domain rectangle(double w, double h) {
   return fp::Domain::from_rings({{0, 0}, {w, 0}, {w, h}, {0, h}});
 }
 
+// m x m disks of radius r in the square [0, 2 r m]^2, each touching its 4 neighbours and the
+// walls around the edge.
+std::vector<fp::Disk> square_lattice(int m, double r) {
+  std::vector<fp::Disk> disks;
+  for (int j = 0; j < m; ++j) {
+    for (int i = 0; i < m; ++i) {
+      disks.push_back({{r * (2 * i + 1), r * (2 * j + 1)}, r});
+    }
+  }
+  return disks;
+}
+
 }  // namespace
 
 TEST(Stats, SquareLattice) {
@@ -29,12 +41,7 @@ TEST(Stats, SquareLattice) {
   const int m = 100;
   const double r = 0.005;
   const double side = 2 * r * m;
-  std::vector<fp::Disk> disks;
-  for (int j = 0; j < m; ++j) {
-    for (int i = 0; i < m; ++i) {
-      disks.push_back({{r * (2 * i + 1), r * (2 * j + 1)}, r});
-    }
-  }
+  const std::vector<fp::Disk> disks = square_lattice(m, r);
   const fp::PackingStats s = fp::measure(rectangle(side, side), disks);
   const double quarter_pi = std::numbers::pi / 4;
   EXPECT_EQ(s.disks, static_cast<std::size_t>(m * m));
@@ -358,12 +365,7 @@ TEST(Stats, CoverageProfileAndCellsOfASquareLattice) {
   const int m = 100;
   const double r = 0.005;
   const double side = 2 * r * m;
-  std::vector<fp::Disk> disks;
-  for (int j = 0; j < m; ++j) {
-    for (int i = 0; i < m; ++i) {
-      disks.push_back({{r * (2 * i + 1), r * (2 * j + 1)}, r});
-    }
-  }
+  const std::vector<fp::Disk> disks = square_lattice(m, r);
   const fp::Domain domain = rectangle(side, side);
   fp::StatsOptions o;
   o.samples = 1'000'000;

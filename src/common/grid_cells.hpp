@@ -3,6 +3,7 @@
 // NaN and for lengths beyond the doubles.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 
@@ -26,6 +27,32 @@ inline std::size_t cell_index(double x, double origin, double inv_h, std::size_t
     return 0;
   }
   return t >= static_cast<double>(n - 1) ? n - 1 : static_cast<std::size_t>(t);
+}
+
+// Visits the cells (i, j) of ring k around cell (ci, cj) of an nx x ny grid: those with
+// max(|i - ci|, |j - cj|) == k, clipped to the grid, row by row. Searches outwards for the
+// nearest of something ring by ring: what a ring k has not met lies outside the (2k + 1)-cell
+// block around the cell.
+template <class Visit>
+void visit_ring(std::size_t ci, std::size_t cj, std::size_t k, std::size_t nx, std::size_t ny, Visit&& visit) {
+  const std::size_t i0 = ci >= k ? ci - k : 0;
+  const std::size_t i1 = std::min(ci + k, nx - 1);
+  const std::size_t j0 = cj >= k ? cj - k : 0;
+  const std::size_t j1 = std::min(cj + k, ny - 1);
+  for (std::size_t j = j0; j <= j1; ++j) {
+    if (j + k == cj || j == cj + k) {
+      for (std::size_t i = i0; i <= i1; ++i) {
+        visit(i, j);
+      }
+    } else {
+      if (ci >= k) {
+        visit(ci - k, j);
+      }
+      if (ci + k < nx) {
+        visit(ci + k, j);
+      }
+    }
+  }
 }
 
 }  // namespace frontpack::detail

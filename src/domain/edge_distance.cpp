@@ -4,6 +4,8 @@
 #include <cmath>
 #include <utility>
 
+#include "common/grid_cells.hpp"
+
 namespace frontpack::detail {
 
 EdgeDistanceIndex::EdgeDistanceIndex(const Domain& domain, double h) {
@@ -102,34 +104,16 @@ double EdgeDistanceIndex::distance(Point p, double cap) const {
     return cap;
   }
   double best = cap;
+  const auto visit = [&](std::size_t i, std::size_t j) {
+    const std::size_t c = j * nx_ + i;
+    for (std::size_t e = start_[c]; e < start_[c + 1]; ++e) {
+      const Point q = closest(edges_[e], p);
+      best = std::min(best, std::hypot(q.x - p.x, q.y - p.y));
+    }
+  };
   const std::size_t reach = std::max(nx_, ny_);
   for (std::size_t k = first; k <= reach; ++k) {
-    // Ring k: the cells (i, j) with max(|i - ci|, |j - cj|) == k, clipped to the grid.
-    const std::size_t i0 = ci >= k ? ci - k : 0;
-    const std::size_t i1 = std::min(ci + k, nx_ - 1);
-    const std::size_t j0 = cj >= k ? cj - k : 0;
-    const std::size_t j1 = std::min(cj + k, ny_ - 1);
-    const auto visit = [&](std::size_t i, std::size_t j) {
-      const std::size_t c = j * nx_ + i;
-      for (std::size_t e = start_[c]; e < start_[c + 1]; ++e) {
-        const Point q = closest(edges_[e], p);
-        best = std::min(best, std::hypot(q.x - p.x, q.y - p.y));
-      }
-    };
-    for (std::size_t j = j0; j <= j1; ++j) {
-      if (j + k == cj || j == cj + k) {
-        for (std::size_t i = i0; i <= i1; ++i) {
-          visit(i, j);
-        }
-      } else {
-        if (ci >= k) {
-          visit(ci - k, j);
-        }
-        if (ci + k < nx_) {
-          visit(ci + k, j);
-        }
-      }
-    }
+    visit_ring(ci, cj, k, nx_, ny_, visit);
     // Every edge not yet seen lies outside the (2k + 1)-cell block around p's cell: farther than
     // k h from p (a millionth of a cell spared for the rounding of p's cell index).
     if (best <= (static_cast<double>(k) - 1e-6) * h_) {

@@ -116,24 +116,7 @@ double Clearance::disk_distance(Point p, double cap) const {
   };
   const std::size_t reach = std::max(nx_, ny_);
   for (std::size_t k = 0; k <= reach; ++k) {
-    const std::size_t i0 = ci >= k ? ci - k : 0;
-    const std::size_t i1 = std::min(ci + k, nx_ - 1);
-    const std::size_t j0 = cj >= k ? cj - k : 0;
-    const std::size_t j1 = std::min(cj + k, ny_ - 1);
-    for (std::size_t j = j0; j <= j1; ++j) {
-      if (j + k == cj || j == cj + k) {
-        for (std::size_t i = i0; i <= i1; ++i) {
-          visit(i, j);
-        }
-      } else {
-        if (ci >= k) {
-          visit(ci - k, j);
-        }
-        if (ci + k < nx_) {
-          visit(ci + k, j);
-        }
-      }
-    }
+    visit_ring(ci, cj, k, nx_, ny_, visit);
     // A disk listed in no cell of the (2k + 1)-cell block misses the block: its surface is
     // farther than k cells from p.
     if (best <= (static_cast<double>(k) - 1e-6) * side_) {

@@ -11,7 +11,10 @@ namespace frontpack::detail {
 std::vector<Gap> cavity_gaps(Obstacles& obstacles, const Elements& elements, const RunFrame& frame, std::size_t placed,
                              const std::stop_token& stop) {
   std::vector<Gap> found;
-  const double h = std::max(frame.rmax, std::sqrt(2.0) * (frame.rmax - frame.rmin));
+  const double h = std::sqrt(2.0) * (frame.rmax - frame.rmin);
+  if (!(h >= frame.rmax)) {
+    return found;  // rmax / rmin below 3.4: more than about one probe per disk
+  }
   const auto nx = static_cast<std::size_t>(std::min(frame.width / h + 1, 1e8));
   const auto ny = static_cast<std::size_t>(std::min(frame.height / h + 1, 1e8));
   if (nx * ny > 4 * placed + 1024) {
@@ -26,6 +29,7 @@ std::vector<Gap> cavity_gaps(Obstacles& obstacles, const Elements& elements, con
     for (std::size_t i = 0; i < nx; ++i) {
       const double x = (static_cast<double>(i) + 0.5) * h;
       if (!(x - r >= 0 && x + r <= frame.width && y - r >= 0 && y + r <= frame.height) ||
+          obstacles.covered_in_cell(elements, x, y, r) ||
           obstacles.deepest<true>(elements, obstacles.probe(x, y, r)) != kNoElement || !obstacles.inside(x, y)) {
         continue;
       }

@@ -22,9 +22,11 @@ namespace frontpack::detail {
 /// nearest it whose free side (the left) holds it. A cavity that takes a disk of radius rho holds
 /// a lattice point within h / sqrt(2) of that disk's centre, where a disk of radius
 /// rho - h / sqrt(2) fits (the clearance of a point is 1-Lipschitz); h = sqrt(2) (rmax - rmin)
-/// finds every cavity that takes rmax. h is at least rmax, so that the pass costs about one probe
-/// per disk: below rmax / rmin = 3.4 it finds the cavities that take rmin + 0.71 rmax. Nothing if
-/// the lattice has more than four points per disk placed (a sliver), or once `stop` is requested.
+/// finds every cavity that takes rmax. The pass runs only where h >= rmax (rmax / rmin >= 3.4), so
+/// that it costs about one probe per disk or less: below, the closing rule (boundary_front.cpp)
+/// leaves no hole that takes rmax (bidisperse 1:1.4 to uniform 1:3, largest empty circle 0.70-1.00
+/// rmax), and a lattice fine enough cost a third of the front. Nothing either if the lattice has
+/// more than four points per disk placed (a sliver), or once `stop` is requested.
 [[nodiscard]] std::vector<Gap> cavity_gaps(Obstacles& obstacles, const Elements& elements, const RunFrame& frame,
                                            std::size_t placed, const std::stop_token& stop);
 

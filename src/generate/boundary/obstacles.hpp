@@ -67,6 +67,20 @@ class Obstacles {
     return index_.nearest(x, y, d2, best);
   }
 
+  // Whether a disk in the grid cell of (x, y) lies within rho of it (a disk of radius rho there
+  // would overlap it): a quick first test before a scan, for the cavity pass.
+  [[nodiscard]] bool covered_in_cell(const Elements& el, double x, double y, double rho) const noexcept {
+    const std::size_t home = static_cast<std::size_t>(probe_row(y)) * grid_.nx + static_cast<std::size_t>(probe_col(x));
+    for (std::int32_t e = head_cell_[home]; e != kNoElement; e = el.node(e).cell_next) {
+      const BoundaryNode& o = el.node(e);
+      const double reach = o.r + rho;
+      if ((o.x - x) * (o.x - x) + (o.y - y) * (o.y - y) < reach * reach) {
+        return true;
+      }
+    }
+    return false;
+  }
+
   // The two disks whose surfaces lie nearest (x, y) (least |p - c| - r), among those whose
   // centres lie within reach + rmax of it; kNoElement for each that is missing. Of two as near,
   // the older. For the cavity pass (boundary_front.cpp): once, after the front.
