@@ -201,7 +201,7 @@ set(O ${TOOL_OUT}/fill_json_voids)
 frontpack_tool_check(fill_json_voids 0 "disks: +[1-9][0-9]+" FILES ${O}/s.json
   JSON ${O}/s.json "largest_empty_circle/radius_over_rmax=^[0-9]" "holes/1/count=^[0-9]+$" "coverage_profile/6/to=^$"
        "coverage_profile/5/to_rmax=^6(\\.0)?$" "cell_coverage/cell_side=^0\\.[0-9]+" "cell_coverage/cells=^[1-9]"
-  ARGS fill ${SQ} --radius uniform:0.01,0.02 --seed 3 --json ${O}/s.json)
+  ARGS fill ${SQ} --radius uniform:0.01,0.02 --seed 3 --holes --json ${O}/s.json)
 # stats: the measures of holes and seams, and --hole-radius (repeatable).
 set(O ${TOOL_OUT}/stats_voids)
 frontpack_tool_check(stats_voids 0

@@ -234,7 +234,7 @@ def size_specs(area, disks):
 
 def quality_run(tool, shape_path, method, spec, seed, workdir):
     d = tempfile.mkdtemp(dir=workdir)
-    j, _ = fill(tool, shape_path, method, spec, seed, d)
+    j, _ = fill(tool, shape_path, method, spec, seed, d, extra=("--holes",))
     disks = max(j["disks"], 1)
     rmax = j["radius"]["max"]
     interior = j["interior_fraction"]
