@@ -68,6 +68,7 @@ constexpr int kMoves = 0;
 constexpr int kClose = 2;
 constexpr int kWallCut = 1;
 constexpr int kWallMoves = 3;
+constexpr int kVoidMoves = 3;
 // The end of a run: the last voids, where the fronts met, are filled with the radii that fit
 // them, skipping those that fit none, at most one radius in kSkipPer placed. Without it the seam
 // where the fronts met last stayed sparse (the centre of a 10 x 10 square, uniform radii
@@ -75,8 +76,9 @@ constexpr int kWallMoves = 3;
 // 0.868 around); skipping 1 in 1000 gave 0.829 and 0.852, 1 in 100 0.870 and 0.879, with the KS
 // distance by area from the request 0.0017 -> 0.0018 (measured without the cavity pass).
 constexpr std::size_t kSkipPer = 100;
-constexpr int kVoidMoves = 3;
 
+// Voids are part of the method: fill() refuses FillOptions::fill_voids = false for it (without
+// them every gap a drawn radius did not fit was dropped, and the packing kept large empty areas).
 class BoundaryFront {
  public:
   BoundaryFront(const FrontSettings& req, const Polygon& polygon, Rng& rng, std::vector<Disk>& out, FillStats& stats)
@@ -140,9 +142,7 @@ class BoundaryFront {
           head_ = 0;
         }
         if (const std::int32_t o = overtaker(g); o != kNone) {
-          if (req_.fill_voids) {
-            push_void(g, kClasses - 1, o);
-          }
+          push_void(g, kClasses - 1, o);
           continue;
         }
       } else {
@@ -158,7 +158,7 @@ class BoundaryFront {
           cls = class_of(r);
           continue;
         }
-        if (!cavities_searched_ && req_.fill_voids) {
+        if (!cavities_searched_) {
           cavities_searched_ = true;
           if (find_cavities()) {
             continue;
@@ -179,7 +179,7 @@ class BoundaryFront {
         area_ += r * r;
         r = draw();
         cls = class_of(r);
-      } else if (req_.fill_voids && cls > 0 && !t.hopeless) {
+      } else if (cls > 0 && !t.hopeless) {
         // r did not fit: the gap may still take a smaller disk, at most as large as the pocket
         // between its elements and the disk in the way.
         if (t.capped) {
@@ -477,7 +477,7 @@ class BoundaryFront {
       push_gap(Gap{x, n});
       push_gap(Gap{n, y});
     }
-    if (req_.fill_voids && replaced != kNone && !is_wall(x) && !is_wall(y) && worth_a_void(x, y)) {
+    if (replaced != kNone && !is_wall(x) && !is_wall(y) && worth_a_void(x, y)) {
       // The pocket on the far side of a pair from a move (cases (b)-(d)), bounded by the
       // parent the last move replaced, which lies there (bounded by n, 29k first tries of
       // these voids on the 3 x 3 square placed nothing, 95% of them blocked by that parent).
@@ -486,13 +486,11 @@ class BoundaryFront {
       // stayed the same without them.)
       push_void(Gap{y, x}, kClasses - 1, replaced);
     }
-    if (req_.fill_voids) {
-      // The cusp between the new disk, a wall parent and the other parent.
-      if (is_wall(x) && !is_wall(y)) {
-        push_void(Gap{n, x}, kClasses - 1, y);
-      } else if (is_wall(y) && !is_wall(x)) {
-        push_void(Gap{y, n}, kClasses - 1, x);
-      }
+    // The cusp between the new disk, a wall parent and the other parent.
+    if (is_wall(x) && !is_wall(y)) {
+      push_void(Gap{n, x}, kClasses - 1, y);
+    } else if (is_wall(y) && !is_wall(x)) {
+      push_void(Gap{y, n}, kClasses - 1, x);
     }
     stats_.void_fills += in_void ? 1U : 0U;
   }
