@@ -18,6 +18,10 @@ function(frontpack_target_settings target)
                                              -fno-omit-frame-pointer)
     target_link_options(${target} PUBLIC -fsanitize=address,undefined)
   endif()
+  if(FRONTPACK_DRIVER_OPTIMIZE AND NOT target STREQUAL "frontpack")
+    # Every target but the library: the tool, the tests, the fuzz drivers, the benchmarks.
+    target_compile_options(${target} PRIVATE ${FRONTPACK_DRIVER_OPTIMIZE})
+  endif()
   if(FRONTPACK_BUILD_FUZZERS)
     # Coverage feedback for libFuzzer in every target of ours; the fuzz programs add the driver.
     target_compile_options(${target} PRIVATE -fsanitize=fuzzer-no-link)
