@@ -44,13 +44,35 @@ void sample_fractions(const Domain& domain, std::span<const Disk> disks, const E
   const std::size_t ny = axis_cells(std::ceil(b.height() / step) - 1, kMaxAxisCells);
   const double sx = b.width() / static_cast<double>(nx);
   const double sy = b.height() / static_cast<double>(ny);
-  std::vector<std::uint32_t> order(disks.size());
-  for (std::size_t k = 0; k < order.size(); ++k) {
-    order[k] = static_cast<std::uint32_t>(k);
+  // The disks by the row where the sweep takes them up: the first row j whose top y1(j) is at or
+  // above the disk's bottom (the last row for a disk above the box). A counting sort, linear in
+  // the disks: the quotient gives the row up to rounding, the comparisons with y1 settle it.
+  const auto row_top = [&b, sy](std::size_t j) { return b.ymin + static_cast<double>(j) * sy + sy; };
+  std::vector<std::uint32_t> row_of(disks.size());
+  std::vector<std::size_t> row_start(ny + 1, 0);
+  for (std::size_t k = 0; k < disks.size(); ++k) {
+    const double bottom = disks[k].centre.y - disks[k].radius;
+    const double q = std::floor((bottom - b.ymin) / sy);
+    std::size_t j = q > 0 ? static_cast<std::size_t>(std::min(q, static_cast<double>(ny - 1))) : 0;
+    while (j > 0 && bottom <= row_top(j - 1)) {
+      --j;
+    }
+    while (j + 1 < ny && bottom > row_top(j)) {
+      ++j;
+    }
+    row_of[k] = static_cast<std::uint32_t>(j);
+    ++row_start[j + 1];
   }
-  std::sort(order.begin(), order.end(), [&disks](std::uint32_t p, std::uint32_t q) {
-    return disks[p].centre.y - disks[p].radius < disks[q].centre.y - disks[q].radius;
-  });
+  for (std::size_t j = 0; j < ny; ++j) {
+    row_start[j + 1] += row_start[j];
+  }
+  std::vector<std::uint32_t> order(disks.size());
+  {
+    std::vector<std::size_t> fill(row_start.begin(), row_start.end() - 1);
+    for (std::size_t k = 0; k < disks.size(); ++k) {
+      order[fill[row_of[k]]++] = static_cast<std::uint32_t>(k);
+    }
+  }
   std::vector<std::uint32_t> active;
   std::size_t next = 0;
   std::vector<Point> points(nx);
@@ -67,13 +89,12 @@ void sample_fractions(const Domain& domain, std::span<const Disk> disks, const E
   for (std::size_t j = 0; j < ny; ++j) {
     detail::throw_if_stopped(stop);
     const double y0 = b.ymin + static_cast<double>(j) * sy;
-    const double y1 = y0 + sy;
     for (std::size_t i = 0; i < nx; ++i) {
       const std::uint64_t key = splitmix64(splitmix64(0x5eed0000ULL + j) ^ i);
       points[i] = Point{b.xmin + (static_cast<double>(i) + unit(key)) * sx, y0 + unit(splitmix64(key)) * sy};
     }
-    while (next < order.size() && disks[order[next]].centre.y - disks[order[next]].radius <= y1) {
-      active.push_back(order[next++]);
+    for (; next < row_start[j + 1]; ++next) {
+      active.push_back(order[next]);
     }
     std::fill(covered.begin(), covered.end(), std::uint8_t{0});
     std::size_t keep = 0;

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <vector>
 
+#include "common/radix_sort.hpp"
 #include "stats/parts.hpp"
 
 namespace frontpack {
@@ -11,7 +12,7 @@ namespace detail {
 
 // The radius with half of the area (sum of r^2) at or below it; sorts r. 0 for none.
 double median_by_area(std::vector<double>& r) {
-  std::sort(r.begin(), r.end());
+  detail::sort_non_negative(r);
   const double k = square_safe_scale(r.empty() ? 1 : r.back());
   double total = 0;
   for (const double x : r) {
@@ -77,7 +78,7 @@ SizeStats measure_sizes(std::span<const double> radii, const RadiusDistribution*
     s.requested = requested->describe();
   }
   std::vector<double> r(radii.begin(), radii.end());
-  std::sort(r.begin(), r.end());
+  detail::sort_non_negative(r);
   const std::size_t n = r.size();
   // Area weights (r^2) at a scale where they neither overflow nor underflow.
   const double k = square_safe_scale(n > 0 ? r.back() : 1);

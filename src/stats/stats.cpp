@@ -175,7 +175,7 @@ PackingStats measure(const Domain& domain, std::span<const Disk> disks, const St
   const EdgeDistanceIndex edges(domain, w > 0 ? w : std::sqrt(domain.area()) / 64);
   sample_fractions(domain, disks, edges, w, options.samples, options.coverage_profile ? rmax : 0, s, options.stop);
   measure_voids(domain, disks, edges, options, s);
-  if (disks.empty()) {
+  if (disks.empty() || !options.contacts) {
     return s;
   }
   std::vector<std::size_t> degree(disks.size(), 0);
