@@ -79,7 +79,7 @@ Packing run_fill(const Domain& domain, const FillOptions& options,
   raw.reserve(static_cast<std::size_t>(budget.estimate * 1.2) + 64);
   detail::Rng rng(options.seed);
   std::vector<std::size_t> part_end;  // raw[part_end[p - 1] .. part_end[p]) came from polygon p
-  detail::ProgressMeter meter(domain, progress, options.stop);
+  detail::ProgressMeter meter(domain, options.method, progress, options.stop);
   for (std::size_t p = 0; p < domain.num_polygons() && !packing.truncated && !packing.cancelled; ++p) {
     detail::FrontSettings req;
     req.method = options.method;
@@ -115,6 +115,7 @@ Packing run_fill(const Domain& domain, const FillOptions& options,
 
   detail::throw_if_stopped(options.stop);
   packing.stats.seconds_front = seconds_since(t0);
+  meter.generated(raw.size());
   packing.certificate = detail::certify_fill(domain, raw, part_end, options.stop, packing.stats);
   packing.disks = std::move(raw);
   meter.finish(packing.certificate.generated);

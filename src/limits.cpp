@@ -71,9 +71,13 @@ RunBudget check_limits(const Domain& domain, const FillOptions& options, const R
   return RunBudget{estimate, memory_limit >= 1 ? count_of_bytes(memory_limit) : 0};
 }
 
-ProgressMeter::ProgressMeter(const Domain& domain, const std::function<bool(const Progress&)>& progress,
+ProgressMeter::ProgressMeter(const Domain& domain, Method method, const std::function<bool(const Progress&)>& progress,
                              const std::stop_token& stop)
     : progress_(progress), stop_(stop) {
+  if (method == Method::boundary) {
+    to_cover_ = kEstimateFraction * domain.area();
+    return;
+  }
   for (std::size_t p = 0; p < domain.num_polygons(); ++p) {
     to_cover_ += kEstimateFraction * domain.bbox(p).width() * domain.bbox(p).height();
   }
@@ -91,7 +95,7 @@ std::function<bool(std::size_t, double)> ProgressMeter::tick() const {
       return true;
     }
     const double covered = covered_before_ + std::numbers::pi * r2;
-    return progress_(Progress{total, std::min(0.99, covered / std::max(to_cover_, 1e-300)), covered});
+    return progress_(Progress{total, std::min(0.99, covered / std::max(to_cover_, 1e-300)), covered, Phase::generate});
   };
 }
 
@@ -101,9 +105,16 @@ void ProgressMeter::polygon_done(std::span<const Disk> disks) {
   }
 }
 
+void ProgressMeter::generated(std::size_t generated) const {
+  if (progress_) {
+    (void)progress_(Progress{generated, 1.0, covered_before_, Phase::generate});
+    (void)progress_(Progress{generated, 0.0, covered_before_, Phase::certify});
+  }
+}
+
 void ProgressMeter::finish(std::size_t generated) const {
   if (progress_) {
-    (void)progress_(Progress{generated, 1.0, covered_before_});
+    (void)progress_(Progress{generated, 1.0, covered_before_, Phase::certify});
   }
 }
 

@@ -23,11 +23,13 @@ struct RunBudget {
 [[nodiscard]] RunBudget check_limits(const Domain& domain, const FillOptions& options, const RadiusDistribution& radii);
 
 /// Progress of a fill across its polygons: the area of the disks generated over the area a dense
-/// packing covers in the polygons' boxes (kEstimateFraction of it), so that the fraction reaches
-/// about 1 at the end. Holds references to `progress` and `stop`.
+/// packing covers (kEstimateFraction of it) where the method puts disks: the domain itself for
+/// the boundary method, the polygons' boxes for the paper's forms (which cull what overhangs),
+/// so that the fraction reaches about 1 as the front ends, holes or not. Holds references to
+/// `progress` and `stop`.
 class ProgressMeter {
  public:
-  ProgressMeter(const Domain& domain, const std::function<bool(const Progress&)>& progress,
+  ProgressMeter(const Domain& domain, Method method, const std::function<bool(const Progress&)>& progress,
                 const std::stop_token& stop);
 
   /// The generators' tick (FrontSettings::tick) for the next polygon: false once `stop` is
@@ -37,7 +39,9 @@ class ProgressMeter {
   /// The disks a polygon's run appended, once it has returned.
   void polygon_done(std::span<const Disk> disks);
 
-  /// Reports the end: fraction 1, `generated` disks.
+  /// Reports the front's end (fraction 1, `generated` disks) and the certification's start.
+  void generated(std::size_t generated) const;
+  /// Reports the certification's end.
   void finish(std::size_t generated) const;
 
  private:

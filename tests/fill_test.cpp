@@ -344,11 +344,13 @@ TEST(Fill, ProgressAndCancellation) {
 }
 
 // Progress is the fraction of the area to fill that is filled: it grows with every report, is
-// close to 1 at the last report before the end (the density estimate is good), and is 1 at the
-// end, with the area of every disk generated.
-TEST(Fill, ProgressIsTheAreaFilled) {
-  const fp::Domain d = fp::Domain::from_wkt("POLYGON((0 0,1 0,1 1,0 1,0 0))");
+// close to 1 at the last report before the front ends (the density estimate is good), and is 1
+// as it ends, with the area of every disk generated; then the certification starts (0) and ends
+// (1). On a domain with holes too: the boundary method's area to fill is the domain's, not the
+// polygons' boxes'.
+void expect_progress_is_the_area_filled(const fp::Domain& d, fp::Method method, double last_tick_at_least) {
   fp::FillOptions o;
+  o.method = method;
   o.radii = fp::Radii::uniform(0.001, 0.002);
   fp::Generator g(d, o);
   std::vector<fp::Progress> reports;
@@ -357,17 +359,37 @@ TEST(Fill, ProgressIsTheAreaFilled) {
     return true;
   });
   const fp::Packing p = g.run();
-  ASSERT_GE(reports.size(), 3U);
-  for (std::size_t i = 1; i < reports.size(); ++i) {
+  ASSERT_GE(reports.size(), 5U);
+  const std::size_t n = reports.size() - 2;  // the generation's reports
+  for (std::size_t i = 0; i < n; ++i) {
+    EXPECT_EQ(reports[i].phase, fp::Phase::generate);
+  }
+  for (std::size_t i = 1; i < n; ++i) {
     EXPECT_GT(reports[i].fraction, reports[i - 1].fraction);
     EXPECT_GT(reports[i].area, reports[i - 1].area);
   }
-  const fp::Progress& last_tick = reports[reports.size() - 2];
-  EXPECT_GT(last_tick.fraction, 0.6);
+  const fp::Progress& last_tick = reports[n - 2];
+  EXPECT_GT(last_tick.fraction, last_tick_at_least);
   EXPECT_LE(last_tick.fraction, 0.99);
-  EXPECT_EQ(reports.back().fraction, 1.0);
-  EXPECT_EQ(reports.back().disks, p.certificate.generated);
-  EXPECT_GE(reports.back().area, covered_fraction(d, p.disks) * d.area());
+  EXPECT_EQ(reports[n - 1].fraction, 1.0);
+  EXPECT_EQ(reports[n - 1].disks, p.certificate.generated);
+  EXPECT_GE(reports[n - 1].area, covered_fraction(d, p.disks) * d.area());
+  EXPECT_EQ(reports[n].phase, fp::Phase::certify);
+  EXPECT_EQ(reports[n].fraction, 0.0);
+  EXPECT_EQ(reports[n + 1].phase, fp::Phase::certify);
+  EXPECT_EQ(reports[n + 1].fraction, 1.0);
+  EXPECT_EQ(reports[n + 1].disks, p.certificate.generated);
+}
+
+TEST(Fill, ProgressIsTheAreaFilled) {
+  const fp::Domain square = fp::Domain::from_wkt("POLYGON((0 0,1 0,1 1,0 1,0 0))");
+  expect_progress_is_the_area_filled(square, fp::Method::boundary, 0.75);
+  expect_progress_is_the_area_filled(square, fp::Method::closed, 0.6);
+  // A square with a hole of half its area.
+  const fp::Domain holed = fp::Domain::from_wkt(
+      "POLYGON((0 0,1 0,1 1,0 1,0 0),(0.1464466 0.1464466,0.1464466 0.8535534,0.8535534 0.8535534,"
+      "0.8535534 0.1464466,0.1464466 0.1464466))");
+  expect_progress_is_the_area_filled(holed, fp::Method::boundary, 0.75);  // 0.42 with the boxes
 }
 
 // The overlap pass works tile by tile beyond 2^18 disks. 600,000 disks on a jittered lattice with

@@ -288,3 +288,26 @@ if(FRONTPACK_SANITIZE)
   set_property(TEST ${tool_tests} APPEND PROPERTY ENVIRONMENT
     "LSAN_OPTIONS=suppressions=${CMAKE_CURRENT_SOURCE_DIR}/lsan_fontconfig.supp:print_suppressions=0")
 endif()
+
+# The library's front options on the command line: --no-voids (the paper's forms as published:
+# no void fill in the JSON counters), --window, --start (the closed form's first disk is centred
+# there) and --clearance (the second disk, tangent to it, is that much farther); and their errors.
+set(O ${TOOL_OUT}/fill_no_voids)
+frontpack_tool_check(fill_no_voids 0 "closed form" FILES ${O}/s.json
+  JSON ${O}/s.json "generation/void_fills=^0$" "certificate/dropped=^0$"
+  ARGS fill ${SQ} --method closed --radius uniform:0.02,0.04 --no-voids --window 0 --json ${O}/s.json)
+frontpack_tool_test(fill_no_voids_boundary 5 "boundary method keeps its voids" fill ${SQ} --no-voids)
+set(O ${TOOL_OUT}/fill_start)
+frontpack_tool_check(fill_start 0 "closed form" FILES ${O}/p.csv FILE_MATCHES ${O}/p.csv "^x,y,r\n0\\.25,0\\.75,0\\.01\n0\\.270000000001,0\\.75,"
+  ARGS fill ${SQ} --method closed --radius constant:0.01 --start 0.25,0.75 --clearance 1e-12 -o ${O}/p.csv)
+frontpack_tool_test(fill_start_not_closed 5 "--start is where the closed form .* the boundary form has no start point"
+  fill ${SQ} --start 0.5,0.5)
+frontpack_tool_test(fill_start_bad 5 "--start '0.5': expected two numbers X,Y" fill ${SQ} --method closed --start 0.5)
+frontpack_tool_test(fill_start_many_polygons 5 "--start: the domain has 4 polygons"
+  fill ${S}/islands.wkt --method closed --start 0.5,0.5)
+frontpack_tool_test(fill_clearance_bad 5 "--clearance -1: expected a gap > 0" fill ${SQ} --clearance -1)
+frontpack_tool_test(fill_clearance_tiny 5 "clearance" fill ${SQ} --clearance 1e-300)
+frontpack_tool_test(fill_window_bad 5 "--window -2: expected a whole number" fill ${SQ} --window -2)
+# --progress in a log: every phase named, the generation at 100%.
+frontpack_tool_test(fill_progress_log 0 "progress: generating +100% of area.*progress: certifying [0-9]+ disks.*progress: measuring.*progress: writing .*fill_progress_log\\.csv.*disks: "
+  fill ${SQ} --radius uniform:0.01,0.02 --progress -o ${TOOL_OUT}/fill_progress_log.csv)

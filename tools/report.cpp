@@ -171,43 +171,4 @@ std::string radii_line(const frontpack::SizeStats& s) {
          ", median by area " + fmt(s.median_area);
 }
 
-ProgressBar::ProgressBar(bool enabled) : enabled_(enabled && ::isatty(STDERR_FILENO) == 1) {}
-
-void ProgressBar::update(const frontpack::Progress& p) {
-  if (!enabled_) {
-    return;
-  }
-  const double t = seconds_since(start_);
-  if (t < 0.5 || (shown_ && t - last_ < 0.1 && p.fraction < 1.0)) {
-    return;
-  }
-  last_ = t;
-  shown_ = true;
-  constexpr int kWidth = 30;
-  const double f = std::clamp(p.fraction, 0.0, 1.0);
-  const int filled = static_cast<int>(f * kWidth);
-  std::string line("\r[");
-  line.append(static_cast<std::size_t>(filled), '#').append(static_cast<std::size_t>(kWidth - filled), '.');
-  char tail[160];
-  const double rate = static_cast<double>(p.disks) / t;
-  const double eta = f > 0.01 ? t * (1 - f) / f : NAN;
-  if (std::isfinite(eta)) {
-    std::snprintf(tail, sizeof tail, "] %3.0f%% of area  %zu disks  %.3g disks/s  ETA %.0f s", 100 * f, p.disks, rate,
-                  eta);
-  } else {
-    std::snprintf(tail, sizeof tail, "] %3.0f%% of area  %zu disks  %.3g disks/s", 100 * f, p.disks, rate);
-  }
-  line.append(tail).append("\033[K");
-  std::fputs(line.c_str(), stderr);
-  std::fflush(stderr);
-}
-
-void ProgressBar::clear() {
-  if (shown_) {
-    std::fputs("\r\033[K", stderr);
-    std::fflush(stderr);
-    shown_ = false;
-  }
-}
-
 }  // namespace frontpack_tool

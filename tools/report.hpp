@@ -33,22 +33,4 @@ using Clock = std::chrono::steady_clock;
 /// "min 0.01, mean 0.03, max 0.05, sd ..., median by area ..."
 [[nodiscard]] std::string radii_line(const frontpack::SizeStats& s);
 
-/// On a terminal only, after half a second: "[#####.....]  42% of area  123456 disks  1.2e+06 disks/s  ETA 3 s".
-class ProgressBar {
- public:
-  explicit ProgressBar(bool enabled);
-  ProgressBar(const ProgressBar&) = delete;
-  ProgressBar& operator=(const ProgressBar&) = delete;
-  ~ProgressBar() { clear(); }
-
-  void update(const frontpack::Progress& p);
-  void clear();
-
- private:
-  bool enabled_;
-  bool shown_ = false;
-  double last_ = 0;
-  Clock::time_point start_ = Clock::now();
-};
-
 }  // namespace frontpack_tool

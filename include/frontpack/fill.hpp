@@ -91,14 +91,22 @@ struct FillOptions {
 /// domain. FillOptions::memory_limit counts both.
 inline constexpr std::size_t peak_bytes_per_disk = 64;
 
+/// The phases of a run, in order.
+enum class Phase : std::uint8_t {
+  generate,  ///< the advancing front
+  certify,   ///< the exact containment and overlap passes
+};
+
 /// Progress of a run, reported through Generator::on_progress.
 struct Progress {
   std::size_t disks = 0;  ///< generated so far
-  /// The fraction of the area to fill that is filled, in [0, 1]: the area of the disks generated
-  /// so far over the area a dense packing covers in the polygons' boxes (0.85 of it); 1 at the
-  /// end, at most 0.99 before.
+  /// Generating: the fraction of the area to fill that is filled, in [0, 1]: the area of the
+  /// disks generated so far over the area a dense packing (0.85) covers in the domain (the
+  /// boundary method) or in the polygons' boxes (the paper's forms, which fill the boxes and cull);
+  /// at most 0.99 before the front is done, then 1. Certifying: 0 as it starts, 1 at the end.
   double fraction = 0.0;
   double area = 0.0;  ///< the area of the disks generated so far (culled ones included)
+  Phase phase = Phase::generate;
 };
 
 /// Counters of the advancing front (what the algorithm did, for diagnostics).
@@ -133,9 +141,11 @@ struct Packing {
 class Generator {
  public:
   Generator(Domain domain, FillOptions options);
-  /// Called about every 2^14 disks generated (and at the end); returning false cancels the run,
-  /// which then returns the certified packing of what was generated so far, with cancelled =
-  /// true. (FillOptions::stop instead cancels the whole run, certification included.)
+  /// Called about every 2^14 disks generated, once the front is done (fraction 1), and as the
+  /// certification starts and ends (Phase::certify, fraction 0 and 1); returning false while
+  /// generating cancels the run, which then returns the certified packing of what was generated
+  /// so far, with cancelled = true (later return values are ignored). FillOptions::stop instead
+  /// cancels the whole run, certification included.
   void on_progress(std::function<bool(const Progress&)> callback);
   [[nodiscard]] Packing run();
 

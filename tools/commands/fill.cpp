@@ -11,12 +11,14 @@
 #include <numbers>
 #include <sstream>
 #include <string>
+#include <string_view>
 #include <system_error>
 #include <vector>
 
 #include "cli.hpp"
 #include "frontpack/frontpack.hpp"
 #include "outputs.hpp"
+#include "progress.hpp"
 #include "render.hpp"
 #include "report.hpp"
 
@@ -66,11 +68,62 @@ struct FillArgs {
   std::vector<std::string> outputs;
   std::string format;
   std::string json;
+  std::string window;
+  std::string start;
+  std::string clearance;
   int width = 1200;
+  bool no_voids = false;
   bool no_histogram = false;
   bool holes = false;
   bool quiet = false;
+  bool progress = false;
 };
+
+// A finite double for OPTION, read exactly as from_chars reads it (no locale). Throws OptionError.
+double parse_double(const char* option, std::string_view text) {
+  double value = 0;
+  const char* first = text.data();
+  const char* last = first + text.size();
+  const auto [end, ec] = std::from_chars(first, last, value);
+  if (text.empty() || ec != std::errc{} || end != last || !std::isfinite(value)) {
+    throw frontpack::OptionError(std::string(option) + " '" + std::string(text.substr(0, 40)) +
+                                 "': expected a finite number, e.g. 0.5 or -2e-3");
+  }
+  return value;
+}
+
+// --start X,Y: the closed form's first disks (FillOptions::start).
+frontpack::Point parse_point(const char* option, const std::string& text) {
+  const std::size_t comma = text.find(',');
+  if (comma == std::string::npos || text.find(',', comma + 1) != std::string::npos) {
+    throw frontpack::OptionError(std::string(option) + " '" + text.substr(0, 40) +
+                                 "': expected two numbers X,Y, e.g. 0.5,0.25");
+  }
+  const std::string_view v(text);
+  return {parse_double(option, v.substr(0, comma)), parse_double(option, v.substr(comma + 1))};
+}
+
+// The library options that have flags, beyond method, radius, seed and limits.
+void apply_front_options(const FillArgs& a, frontpack::FillOptions& options) {
+  if (!a.window.empty()) {
+    options.window = parse_count("--window", a.window, std::uint64_t{1} << 32);
+  }
+  if (!a.start.empty()) {
+    if (options.method != frontpack::Method::closed) {
+      throw frontpack::OptionError("--start is where the closed form (--method closed) places its first disks; the " +
+                                   std::string(frontpack::to_string(options.method)) + " form has no start point");
+    }
+    options.start = parse_point("--start", a.start);
+  }
+  if (!a.clearance.empty()) {
+    options.clearance = parse_double("--clearance", a.clearance);
+    if (!(options.clearance > 0)) {
+      throw frontpack::OptionError("--clearance " + a.clearance +
+                                   ": expected a gap > 0 between tangent disks (leave it out for the automatic one)");
+    }
+  }
+  options.fill_voids = !a.no_voids;
+}
 
 frontpack::Method parse_method(const std::string& name) {
   if (name == "closed") {
@@ -146,6 +199,14 @@ std::string why_no_disk(const frontpack::Domain& domain, const frontpack::FillOp
          (options.method == frontpack::Method::boundary ? "" : " or --method boundary");
 }
 
+// Sample points of the interior and band fractions: 1M in the JSON summary (as `frontpack
+// stats`: +/- 0.0005), a quarter of that in the text summary (+/- 0.001, printed with it), which at
+// a million disks then costs under a tenth of the fill (docs/performance.md, "The summary").
+struct StatsSamples {
+  static constexpr std::size_t json = 1'000'000;
+  static constexpr std::size_t text = 250'000;
+};
+
 int run_fill(const FillArgs& a) {
   const auto t_start = Clock::now();
   const std::string spec = a.radius.empty() ? std::string(kDefaultRadius) : a.radius;
@@ -156,36 +217,47 @@ int run_fill(const FillArgs& a) {
   options.max_disks = parse_count("--max-disks", a.max_disks, std::numeric_limits<std::uint64_t>::max());
   options.memory_limit = parse_bytes("--memory-limit", a.memory_limit);
   options.stop = stop_token();
+  apply_front_options(a, options);
   const std::vector<frontpack_tool::Output> outputs = frontpack_tool::resolve_outputs(a.outputs, a.format, false);
   std::vector<frontpack_tool::FileUse> inputs = domain_inputs(a.src);
   add_curve_input(spec, inputs);
   frontpack_tool::check_files(inputs, output_uses(outputs, a.json));
   const frontpack::Domain domain = load(a.src);
+  if (options.start && domain.num_polygons() > 1) {
+    throw frontpack::OptionError("--start: the domain has " + std::to_string(domain.num_polygons()) +
+                                 " polygons, each filled from its own start (the centre of its bounding box); "
+                                 "--start takes a domain of one polygon");
+  }
 
+  frontpack_tool::ProgressLine line(frontpack_tool::ProgressLine::mode_for(!a.quiet, a.progress));
   frontpack::Packing p;
   {
-    frontpack_tool::ProgressBar bar(!a.quiet);
     frontpack::Generator generator(domain, options);
-    generator.on_progress([&bar](const frontpack::Progress& progress) {
-      bar.update(progress);
+    generator.on_progress([&line](const frontpack::Progress& progress) {
+      line.update(progress);
       return true;
     });
     p = generator.run();
   }
   if (p.disks.empty()) {
+    line.clear();
     std::cerr << "frontpack: " << why_no_disk(domain, options, spec, p.certificate.generated) << "; nothing written\n";
     return nothing_fits;
   }
 
-  // Statistics only where they are shown or written; the quality measures (empty circle, coverage
-  // profile and cells: about 0.6 s per million disks) only where they are written, in the JSON
-  // summary, and the hole counts (about 3 s more) only with --holes (`frontpack stats` shows them).
+  // Statistics only where they are shown or written: the text summary shows the fractions and
+  // the radii only; the JSON summary has the contacts and the quality measures too (empty circle,
+  // coverage profile and cells: about 0.6 s per million disks), and the hole counts (about 3 s
+  // more) only with --holes (`frontpack stats` shows them).
   const auto t_stats = Clock::now();
   frontpack::PackingStats s;
   if (!a.quiet || !a.json.empty()) {
+    line.phase("measuring " + std::to_string(p.disks.size()) + " disks");
     const bool quality = !a.json.empty();
     s = frontpack::measure(domain, p.disks,
                            {.requested = options.radii,
+                            .samples = quality ? StatsSamples::json : StatsSamples::text,
+                            .contacts = quality,
                             .empty_circle = quality,
                             .holes = quality && a.holes,
                             .coverage_profile = quality,
@@ -201,13 +273,16 @@ int run_fill(const FillArgs& a) {
                                               .requested_spec = spec,
                                               .stop = options.stop};
   for (const auto& o : outputs) {
+    line.phase("writing " + o.path.string());
     pending.write(o, domain, p.disks, picture, options.stop);
   }
   if (!a.json.empty()) {
     const Json j = fill_json(a, spec, options, domain, p, s, outputs, seconds_stats, seconds_since(t_start));
     pending.write_text(a.json, j.dump(2) + "\n");
   }
+  line.phase("committing the outputs");
   pending.commit_all(options.stop);
+  line.clear();
 
   if (!a.quiet) {
     const frontpack::Certificate& c = p.certificate;
@@ -270,7 +345,20 @@ Command add_fill(CLI::App& app) {
   cmd->add_flag("--holes", args->holes,
                 "with --json: also count the holes that take the median and the largest radius (about 3 s "
                 "per million disks; frontpack stats counts them always)");
-  cmd->add_flag("-q,--quiet", args->quiet, "print nothing but errors (no summary, no progress bar)");
+  cmd->add_option("--window", args->window,
+                  "front check window M of the paper's forms (Sec. 2.4.3): front disks examined on each side; 0: "
+                  "the whole front (default 5)");
+  cmd->add_option("--start", args->start,
+                  "X,Y: where the closed form places its first three disks (default: the "
+                  "centre of each polygon's bounding box)");
+  cmd->add_option("--clearance", args->clearance,
+                  "gap between tangent disks, at least 16 ulps of the coordinates (default: automatic, a few ulps; "
+                  "docs/robustness.md)");
+  cmd->add_flag("--no-voids", args->no_voids,
+                "the paper's forms as published: no void filling (refused by --method boundary)");
+  cmd->add_flag("--progress", args->progress,
+                "show the progress line even when stderr is not a terminal (one line per phase, for logs)");
+  cmd->add_flag("-q,--quiet", args->quiet, "print nothing but errors (no summary, no progress line)");
   cmd->footer(
       "Example:\n"
       "  frontpack fill shapes/plate_with_holes.wkt --radius uniform:0.005,0.02 --seed 7 \\\n"
