@@ -36,7 +36,8 @@ void resolve(PackingInputs& in) {
     in.domain.file.clear();
   }
   if (in.disks.empty()) {
-    throw CLI::RequiredError(in.domain.from_text() ? "DISKS" : "DOMAIN (or --wkt) and DISKS");
+    throw CLI::RequiredError(in.domain.from_text() || !in.domain.file.empty() ? "DISKS"
+                                                                              : "DOMAIN (or --wkt) and DISKS");
   }
   (void)format_of(in);
   if (!in.timestep.empty()) {
