@@ -102,8 +102,12 @@ void value_line(LineReader& lines, std::string_view item) {
 std::vector<Disk> read_lammps_dump(std::istream& in, std::string_view source_name,
                                    std::optional<std::int64_t> timestep) {
   LineReader lines(in, source_name);
-  std::optional<std::int64_t> step;     // of the snapshot being read
-  std::optional<std::uint64_t> natoms;  // of the snapshot being read
+  // The snapshot being read: its timestep and atom count, once given (plain values and flags:
+  // GCC's -Wmaybe-uninitialized misreads optionals here).
+  std::int64_t step = 0;
+  std::uint64_t natoms = 0;
+  bool have_step = false;
+  bool have_natoms = false;
   std::optional<std::vector<Disk>> chosen;
   std::vector<std::int64_t> steps;
   bool any = false;
@@ -124,7 +128,8 @@ std::vector<Disk> read_lammps_dump(std::istream& in, std::string_view source_nam
         lines.fail(Kind::field_count, "expected the timestep, one whole number");
       }
       step = lines.integer_at(v[0], "the timestep");
-      natoms.reset();
+      have_step = true;
+      have_natoms = false;
     } else if (item == "NUMBER OF ATOMS") {
       value_line(lines, item);
       const std::vector<std::string_view> v = detail::tokens(lines.text());
@@ -132,6 +137,7 @@ std::vector<Disk> read_lammps_dump(std::istream& in, std::string_view source_nam
         lines.fail(Kind::field_count, "expected the number of atoms, one whole number");
       }
       natoms = lines.count_at(v[0], "the number of atoms", kMaxAtoms);
+      have_natoms = true;
     } else if (item.starts_with("BOX BOUNDS")) {
       for (int k = 0; k < 3; ++k) {
         value_line(lines, item);
@@ -146,28 +152,27 @@ std::vector<Disk> read_lammps_dump(std::istream& in, std::string_view source_nam
     } else if (item == "UNITS" || item == "TIME") {
       value_line(lines, item);
     } else if (t[1] == "ATOMS") {
-      if (!step || !natoms) {
+      if (!have_step || !have_natoms) {
         lines.fail(Kind::missing_item, std::string("'ITEM: ATOMS' without a preceding 'ITEM: ") +
-                                           (step ? "NUMBER OF ATOMS'" : "TIMESTEP'") + " in its snapshot");
+                                           (have_step ? "NUMBER OF ATOMS'" : "TIMESTEP'") + " in its snapshot");
       }
       const Columns c = columns(lines, t);
       const std::size_t header = lines.number();
       std::vector<detail::Atom> atoms;
-      for (std::uint64_t k = 0; k < *natoms; ++k) {
+      for (std::uint64_t k = 0; k < natoms; ++k) {
         if (!lines.next()) {
-          lines.fail(Kind::count_mismatch, "the snapshot of timestep " + std::to_string(*step) + " (ATOMS on line " +
+          lines.fail(Kind::count_mismatch, "the snapshot of timestep " + std::to_string(step) + " (ATOMS on line " +
                                                std::to_string(header) + ") ends after " + std::to_string(k) +
-                                               " of its " + std::to_string(*natoms) + " atoms");
+                                               " of its " + std::to_string(natoms) + " atoms");
         }
         atoms.push_back(atom_line(lines, c));
       }
       std::vector<Disk> disks = detail::disks_by_id(std::move(atoms), lines.source());
-      steps.push_back(*step);
-      if (!timestep || *timestep == *step) {
+      steps.push_back(step);
+      if (!timestep || *timestep == step) {
         chosen = std::move(disks);
       }
-      step.reset();
-      natoms.reset();
+      have_step = have_natoms = false;
     } else {
       lines.fail(Kind::syntax, "unknown item " + detail::quote_text(lines.text()) +
                                    " (expected TIMESTEP, NUMBER OF ATOMS, BOX BOUNDS, ATOMS, UNITS or TIME)");
@@ -176,7 +181,7 @@ std::vector<Disk> read_lammps_dump(std::istream& in, std::string_view source_nam
   if (!any) {
     lines.fail(Kind::empty_file, "empty file (expected a LAMMPS dump: 'ITEM: TIMESTEP', ...)");
   }
-  if (step || natoms) {
+  if (have_step || have_natoms) {
     lines.fail(Kind::missing_item, "the last snapshot has no 'ITEM: ATOMS' section (a truncated dump?)");
   }
   if (!chosen) {

@@ -238,9 +238,11 @@ void VtpFile::scan() {
       pos = skip_to(">");
       const std::string_view name = detail::trim(rest.substr(2, pos - lt - 3), detail::is_c_space);
       if (stack.empty() || stack.back() != name) {
-        fail(Kind::syntax, lt,
-             "closing tag </" + std::string(name) + "> does not match " +
-                 (stack.empty() ? std::string("any open element") : "<" + std::string(stack.back()) + ">"));
+        std::string open = "any open element";
+        if (!stack.empty()) {
+          open.assign("<").append(stack.back()).append(">");
+        }
+        fail(Kind::syntax, lt, std::string("closing tag </").append(name).append("> does not match ").append(open));
       }
       if (name == "DataArray" && open_array_ != nullptr && stack.size() >= 2 &&
           (stack[stack.size() - 2] == "Points" || stack[stack.size() - 2] == "PointData")) {

@@ -98,10 +98,10 @@ def check_lammps(work, to_csv, tool, shape, want):
     print("check certifies LAMMPS's write_data after a 0-step run")
 
     with open(os.path.join(work, "in.settle"), "w", encoding="ascii") as f:
-        f.write(LAMMPS_SETUP + "fix down all gravity 1 vector 0 -1 0\n"
+        f.write(LAMMPS_SETUP + "set group all density 1000\nfix down all gravity 100 vector 0 -1 0\n"
                 "fix box all wall/reflect xlo EDGE xhi EDGE ylo EDGE\n"
                 "dump d all custom 100 settled.dump id type x y z radius\n"
-                "dump_modify d format float %.17g\nrun 300\nwrite_data settled.data\n")
+                "dump_modify d format float %.17g\nrun 500\nwrite_data settled.data\n")
     run([lmp, "-in", "in.settle", "-log", "none", "-nocite", "-screen", "none"], work)
     for name in ("settled.data", "settled.dump"):
         out = run([tool, "check", "--all", shape, name], work, expect=6)
