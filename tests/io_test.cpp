@@ -286,7 +286,7 @@ TEST(IoRead, ReadDisksErrors) {
   }
   fs::create_directory(dir.path() / "d.csv");
   EXPECT_THROW((void)fp::read_disks(dir.path() / "d.csv"), fp::IoError);
-  EXPECT_THROW((void)fp::read_disks(dir.path() / "p.data"), fp::OptionError);
+  EXPECT_THROW((void)fp::read_disks(dir.path() / "p.svg"), fp::OptionError);
   EXPECT_THROW((void)fp::read_disks(dir.path() / "p.xyz"), fp::OptionError);
   std::ofstream(dir.path() / "bad.csv") << "x,y,r\n1,2,3\n1,2\n";
   try {

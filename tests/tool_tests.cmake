@@ -144,6 +144,44 @@ frontpack_tool_check(check_missing_disk_file 2 "cannot open '/nonexistent/disks\
 frontpack_tool_check(check_missing_argument 1 "DISKS is required" ARGS check ${SQ})
 frontpack_tool_check(check_help 0 "Example:.*frontpack check shapes/l_shape.wkt packing.csv" ARGS check --help)
 
+# check, stats and render read LAMMPS data and dump files and VTK PolyData, and take --wkt.
+set(SQ_WKT "POLYGON((0 0,1 0,1 1,0 1,0 0))")
+frontpack_tool_check(check_lammps_data 6
+  "disks: +6 in .*one_overlap\\.data \\(numbered from 0 in atom id order\\).*worst: disks 2 and 5 overlap by about 0\\.0625.*overlap 2 5"
+  ARGS check --all ${SQ} ${TD}/one_overlap.data)
+frontpack_tool_check(check_wkt_lammps_data 6 "domain: +--wkt \\(area 1\\).*1 overlapping pair"
+  ARGS check --wkt ${SQ_WKT} ${TD}/one_overlap.data)
+frontpack_tool_check(check_dump_last 6 "disks: +6 .*worst: disks 2 and 5" ARGS check ${SQ} ${TD}/two_snapshots.dump)
+frontpack_tool_check(check_dump_timestep 0 "disks: +5 .*result: +certified"
+  ARGS check --timestep 0 ${SQ} ${TD}/two_snapshots.dump)
+frontpack_tool_check(check_dump_no_timestep 7
+  "two_snapshots\\.dump:29: no snapshot of timestep 7 \\(the dump has 2 snapshots: timesteps 0, 100\\)"
+  ARGS check --timestep 7 ${SQ} ${TD}/two_snapshots.dump)
+frontpack_tool_check(check_bad_timestep 5 "--timestep 1\\.5: expected a whole number" ARGS check --timestep 1.5 ${SQ} ${TD}/two_snapshots.dump)
+frontpack_tool_check(check_vtp_wkt 0 "disks: +5 .*result: +certified" ARGS check --wkt ${SQ_WKT} ${TD}/good.vtp)
+frontpack_tool_check(check_vtp_radius_array 7 "good\\.vtp:4: <Piece>: no point data array 'size' for the radii \\(point data arrays: 'Radius'\\)"
+  ARGS check ${SQ} ${TD}/good.vtp --radius-array size)
+frontpack_tool_check(check_vtp_compressed 7
+  "compressed\\.vtp:11: <DataArray Name=\"Points\">: compressed data \\(vtkZLibDataCompressor\\) is not read by frontpack"
+  ARGS check ${SQ} ${TD}/compressed.vtp)
+frontpack_tool_check(check_lammps_nonzero_z 7 "nonzero_z\\.data:13:21: z must be 0 \\(frontpack's disks are planar\\), got '0\\.0625'"
+  ARGS check ${SQ} ${TD}/nonzero_z.data)
+frontpack_tool_check(check_disks_format 7 "one_overlap\\.data:1: expected an 'ITEM: \\.\\.\\.' line"
+  ARGS check ${SQ} ${TD}/one_overlap.data --disks-format lammps-dump)
+frontpack_tool_check(check_unknown_disks_format 5 "unknown disk file format 'xyz'; expected csv, yade, lammps, lammps-dump or vtp"
+  ARGS check ${SQ} ${TD}/good.csv --disks-format xyz)
+frontpack_tool_check(check_unknown_extension 5 "unknown disk file format '\\.svg'; frontpack reads \\.csv"
+  ARGS check ${SQ} ${TD}/good.svg)
+frontpack_tool_check(check_wkt_two_files 1 "with --wkt, give only DISKS"
+  ARGS check --wkt ${SQ_WKT} ${SQ} ${TD}/good.csv)
+frontpack_tool_check(check_wkt_no_disks 1 "DISKS is required" ARGS check --wkt ${SQ_WKT})
+frontpack_tool_check(stats_wkt_vtp 0 "disks: +5 in .*good\\.vtp.*fraction: +0\\.2454"
+  ARGS stats --wkt ${SQ_WKT} ${TD}/good.vtp --samples 10000)
+frontpack_tool_check(stats_dump 0 "disks: +5 " ARGS stats ${SQ} ${TD}/two_snapshots.dump --timestep 0 --samples 10000)
+set(O ${TOOL_OUT}/render_wkt_lammps)
+frontpack_tool_check(render_wkt_lammps 0 "wrote: .*u\\.png \\(png, 300 x 300, 6 disks\\)" PNG ${O}/u.png 300 300
+  ARGS render --wkt ${SQ_WKT} ${TD}/one_overlap.data -o ${O}/u.png --width 300 --no-histogram)
+
 # render: PNG of the right size (the unit square at 300 px: 300 x 300, plus the panel unless
 # --no-histogram), SVG, PDF.
 frontpack_histogram_height(300 panel_300)

@@ -111,9 +111,4 @@ void add_curve_input(const std::string& spec, std::vector<FileUse>& inputs) {
   }
 }
 
-void add_packing_files(CLI::App& cmd, std::string& domain, std::string& disks, const std::string& disks_help) {
-  cmd.add_option("DOMAIN", domain, "WKT file")->required();
-  cmd.add_option("DISKS", disks, disks_help)->required();
-}
-
 }  // namespace frontpack_tool::cli

@@ -75,9 +75,6 @@ void add_domain_options(CLI::App& cmd, DomainSource& src);
 /// The file a `curve:FILE` radius spec reads, as an input that no output may overwrite.
 void add_curve_input(const std::string& spec, std::vector<FileUse>& inputs);
 
-/// DOMAIN (a WKT file) and DISKS (a disk file, described by `disks_help`), both required.
-void add_packing_files(CLI::App& cmd, std::string& domain, std::string& disks, const std::string& disks_help);
-
 /// One exit code per kind of error (see the top of tools/frontpack.cpp).
 [[nodiscard]] int exit_code(const std::exception& e);
 

@@ -2,9 +2,9 @@
 //
 // Round-trip guarantee: every writer except SVG prints each double in its shortest decimal form
 // that reads back as exactly the same double (std::to_chars), so a packing certified in memory is
-// certified in the file too: read_csv and read_yade (and LAMMPS, ParaView, Yade, Python's float())
-// get back the very bits that were written. Units are those of the domain's coordinates; frontpack
-// never scales.
+// certified in the file too: read_csv, read_yade, read_lammps and read_vtp (and LAMMPS, ParaView,
+// Yade, Python's float()) get back the very bits that were written. Units are those of the domain's coordinates;
+// frontpack never scales.
 //
 // Errors: OptionError (declared in frontpack/fill.hpp) for an unknown format or a bad writer
 // option, IoError (with the OS's reason) for a file that cannot be read or written, DiskFileError
@@ -15,8 +15,10 @@
 #include <cstdint>
 #include <filesystem>
 #include <iosfwd>
+#include <optional>
 #include <span>
 #include <stop_token>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -139,9 +141,76 @@ void write_file(const std::filesystem::path& path, Format format, const Domain& 
 /// the other rules as read_csv (no header required). Throws DiskFileError naming the line.
 [[nodiscard]] std::vector<Disk> read_yade(std::istream& in, std::string_view source_name);
 
-/// Reads a disk file, choosing the reader by format_from_path (CSV or Yade; other formats throw
-/// OptionError). Throws IoError (with the OS's reason) if the file cannot be read, DiskFileError
-/// if it is malformed.
+/// Reads a LAMMPS data file of atom_style sphere: as write_lammps writes it, and as LAMMPS's
+/// `write_data` writes it after a run. The first line is the title. Header lines, in any order:
+/// "N atoms" (required), the other counts of read_data ("N atom types", "N bonds", ...) and the box
+/// ("LO HI xlo xhi", ..., "XY XZ YZ xy xz yz"), which are checked for their form and not used.
+/// Then sections, each a name line (Atoms, Velocities, Masses, Pair Coeffs, ...) and its lines;
+/// only "Atoms" is read (the others are skipped), with an optional "# sphere" style hint (another
+/// style is refused): exactly N lines "id type diameter density x y z", optionally followed by three
+/// image flags (write_data writes them). Ids >= 1 and unique, types >= 1, z = 0, diameter > 0;
+/// radius = diameter / 2 (exact). '#' starts a comment anywhere; blank lines are skipped. Numbers
+/// as read_csv. The disks come in ascending atom id order (LAMMPS writes atoms in the order its
+/// processors hold them): with ids 1..N, disk k is atom k + 1. Throws DiskFileError naming the line.
+[[nodiscard]] std::vector<Disk> read_lammps(std::istream& in, std::string_view source_name);
+
+/// Reads a LAMMPS dump file (`dump custom ... id type x y z radius`): snapshots of "ITEM:" blocks
+/// (TIMESTEP, NUMBER OF ATOMS, BOX BOUNDS, ATOMS, and UNITS or TIME), each checked in full. The
+/// columns are found by the names on the "ITEM: ATOMS" line: id; x and y (or xu and yu); radius (or
+/// diameter, halved); z (or zu), if present, must be 0; other columns are skipped. Scaled
+/// coordinates (xs ys) are refused. The disks of the last snapshot, or of the one at `timestep`,
+/// in ascending atom id order. LAMMPS's default dump format for floats is "%g" (6 significant
+/// digits): for coordinates that certify what the run holds, use
+/// `dump_modify ID format float %.17g`. Throws DiskFileError naming the line; missing_item if no
+/// snapshot has `timestep` (the message lists the timesteps found).
+[[nodiscard]] std::vector<Disk> read_lammps_dump(std::istream& in, std::string_view source_name,
+                                                 std::optional<std::int64_t> timestep = std::nullopt);
+
+/// Reads VTK XML PolyData (.vtp): as write_vtp writes it, and as VTK's vtkXMLPolyDataWriter and
+/// ParaView write it: DataArrays in ascii, binary (inline base64) or appended (raw or base64)
+/// format, either byte order, UInt32 or UInt64 headers, any VTK number type, several Pieces (read
+/// in order). Compressed binary data (a VTKFile `compressor`) is refused (unsupported_format): write
+/// the file uncompressed or in ascii mode. One disk per point, in order: the centre from Points
+/// (z must be 0), the radius from the point data array named `radius_array`, or, if that is empty,
+/// the first of "radius", "Radius", "diameter", "Diameter" (a diameter is halved); cells are not
+/// read. Throws DiskFileError naming the line of the offending XML element.
+[[nodiscard]] std::vector<Disk> read_vtp(std::istream& in, std::string_view source_name,
+                                         std::string_view radius_array = {});
+
+/// The formats of the disk readers.
+enum class DiskFormat : std::uint8_t {
+  csv,          ///< read_csv
+  yade,         ///< read_yade
+  lammps,       ///< read_lammps (data file)
+  lammps_dump,  ///< read_lammps_dump
+  vtp,          ///< read_vtp
+};
+
+/// "csv", "yade", "lammps", "lammps-dump" or "vtp".
+[[nodiscard]] const char* to_string(DiskFormat format) noexcept;
+
+/// The reader for a file name's extension, compared case-insensitively: .csv; .txt and .yade;
+/// .data and .lmp (LAMMPS data); .dump and .lammpstrj (LAMMPS dump); .vtp. Throws OptionError
+/// naming the extension and listing the known ones.
+[[nodiscard]] DiskFormat disk_format_from_path(const std::filesystem::path& path);
+
+/// The reader named `name` (as to_string gives it, for a --disks-format option). Throws
+/// OptionError listing the known names.
+[[nodiscard]] DiskFormat disk_format_from_name(std::string_view name);
+
+/// Options of read_disks for the formats that have a choice.
+struct ReadOptions {
+  std::optional<std::int64_t> timestep;  ///< LAMMPS dump: this snapshot (default: the last)
+  std::string radius_array;              ///< VTK PolyData: the radius array (default: as read_vtp)
+};
+
+/// Reads the disk file `path` with the reader of `format`. Throws IoError (with the OS's reason)
+/// if the file cannot be read, DiskFileError if it is malformed.
+[[nodiscard]] std::vector<Disk> read_disks(const std::filesystem::path& path, DiskFormat format,
+                                           const ReadOptions& options = {});
+
+/// read_disks() with the format chosen by disk_format_from_path (OptionError for an unknown
+/// extension).
 [[nodiscard]] std::vector<Disk> read_disks(const std::filesystem::path& path);
 
 }  // namespace frontpack

@@ -82,6 +82,10 @@ const char* to_string(DiskFileError::Kind kind) noexcept {
     case K::bad_radius: return "bad_radius";
     case K::nonzero_z: return "nonzero_z";
     case K::unsupported_format: return "unsupported_format";
+    case K::syntax: return "syntax";
+    case K::missing_item: return "missing_item";
+    case K::count_mismatch: return "count_mismatch";
+    case K::duplicate_id: return "duplicate_id";
   }
   return "unknown";
 }

@@ -192,23 +192,7 @@ std::vector<Disk> read_yade(std::istream& in, std::string_view source_name) {
 }
 
 std::vector<Disk> read_disks(const std::filesystem::path& path) {
-  Format format = Format::csv;
-  try {
-    format = format_from_path(path);
-  } catch (const OptionError&) {
-    // format_from_path lists every format written; name only those read.
-    const std::string ext = path.extension().string();
-    throw OptionError("'" + path.string() + "': " +
-                      (ext.empty() ? std::string("no file extension to tell the format by")
-                                   : "unknown disk file format '" + ext + "'") +
-                      "; frontpack reads .csv and Yade text (.txt, .yade)");
-  }
-  if (format != Format::csv && format != Format::yade) {
-    throw OptionError("'" + path.string() + "': reading " + to_string(format) +
-                      " files is not supported; frontpack reads .csv and Yade text (.txt, .yade)");
-  }
-  std::ifstream in = detail::open_for_reading(path);
-  return format == Format::csv ? read_csv(in, path.string()) : read_yade(in, path.string());
+  return read_disks(path, disk_format_from_path(path));
 }
 
 }  // namespace frontpack

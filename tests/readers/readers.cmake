@@ -35,3 +35,25 @@ foreach(reader lammps vtk yade)
   endif()
   set_tests_properties(readers.${reader} PROPERTIES SKIP_RETURN_CODE 77 TIMEOUT 300 LABELS readers)
 endforeach()
+
+# The other direction: files written by LAMMPS (write_data, dump) and VTK (vtkXMLPolyDataWriter)
+# read back by frontpack's readers bit for bit, and `frontpack check` on them
+# (tests/readers/from_programs.py). Same skip-or-fail rule as above.
+add_executable(frontpack_disks_to_csv ${CMAKE_CURRENT_LIST_DIR}/disks_to_csv.cpp)
+target_link_libraries(frontpack_disks_to_csv PRIVATE frontpack::frontpack)
+frontpack_target_settings(frontpack_disks_to_csv)
+if(FRONTPACK_BUILD_TOOLS)
+  foreach(program lammps vtk)
+    if(frontpack_reader_python)
+      add_test(NAME readers.from_${program}
+        COMMAND ${frontpack_reader_python} ${CMAKE_CURRENT_LIST_DIR}/from_programs.py ${program}
+                $<TARGET_FILE:frontpack_write_formats> $<TARGET_FILE:frontpack_disks_to_csv>
+                $<TARGET_FILE:frontpack_tool> ${PROJECT_SOURCE_DIR}/shapes/l_shape.wkt
+                ${CMAKE_CURRENT_BINARY_DIR}/from_programs/${program})
+    else()
+      add_test(NAME readers.from_${program}
+        COMMAND sh -c "echo 'python3 is not installed'; test \"$FRONTPACK_REQUIRE_READERS\" = 1 && exit 1; exit 77")
+    endif()
+    set_tests_properties(readers.from_${program} PROPERTIES SKIP_RETURN_CODE 77 TIMEOUT 300 LABELS readers)
+  endforeach()
+endif()

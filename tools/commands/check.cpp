@@ -17,6 +17,7 @@
 #include "cli.hpp"
 #include "frontpack/frontpack.hpp"
 #include "outputs.hpp"
+#include "packing_inputs.hpp"
 #include "render.hpp"
 #include "report.hpp"
 
@@ -25,8 +26,7 @@ namespace frontpack_tool::cli {
 namespace {
 
 struct CheckArgs {
-  std::string domain;
-  std::string disks;
+  PackingInputs in;
   std::string json;
   bool all = false;
   bool quiet = false;
@@ -36,16 +36,19 @@ std::string disk_text(const frontpack::Disk& d) {
   return std::string("centre (") + fmt(d.centre.x) + ", " + fmt(d.centre.y) + "), radius " + fmt(d.radius);
 }
 
-int run_check(const CheckArgs& a) {
-  frontpack_tool::check_files({{"DOMAIN", a.domain}, {"DISKS", a.disks}}, output_uses({}, a.json));
-  const frontpack::Domain domain = frontpack::Domain::from_wkt_file(a.domain);
-  const std::vector<frontpack::Disk> disks = frontpack::read_disks(a.disks);
+int run_check(CheckArgs& a) {
+  resolve(a.in);
+  frontpack_tool::check_files(input_uses(a.in), output_uses({}, a.json));
+  const frontpack::Domain domain = load(a.in.domain);
+  const std::vector<frontpack::Disk> disks = read_disks(a.in);
+  const std::string domain_name = a.in.domain.name();
+  const std::string& disk_file = a.in.disks;
   const frontpack::CertifyReport r = frontpack::certify(domain, disks, stop_token());
   const bool certified = r.outside.empty() && r.overlapping.empty();
 
   std::ostringstream out;
-  out << "domain:      " << a.domain << " (area " << fmt(domain.area()) << ")\n"
-      << "disks:       " << disks.size() << " in " << a.disks << " (numbered from 0 in file order)\n";
+  out << "domain:      " << domain_name << " (area " << fmt(domain.area()) << ")\n"
+      << "disks:       " << disks.size() << " in " << disk_file << " (" << disk_numbering(a.in) << ")\n";
   out << "outside:     " << r.outside.size() << (r.outside.size() == 1 ? " disk" : " disks")
       << " not entirely inside the domain";
   if (r.farthest_outside) {
@@ -81,8 +84,8 @@ int run_check(const CheckArgs& a) {
   if (!a.json.empty()) {
     Json j{{"frontpack_version", frontpack::version_string},
            {"command", "check"},
-           {"domain", a.domain},
-           {"disk_file", a.disks},
+           {"domain", domain_name},
+           {"disk_file", disk_file},
            {"disks", disks.size()},
            {"certified", certified},
            {"outside", r.outside.size()},
@@ -104,7 +107,7 @@ int run_check(const CheckArgs& a) {
     std::cout << out.str();
   }
   if (!certified) {
-    std::cerr << "frontpack: " << a.disks << " is not certified: " << r.overlapping.size() << " overlapping "
+    std::cerr << "frontpack: " << disk_file << " is not certified: " << r.overlapping.size() << " overlapping "
               << (r.overlapping.size() == 1 ? "pair" : "pairs") << ", " << r.outside.size()
               << (r.outside.size() == 1 ? " disk" : " disks") << " outside the domain\n";
     return not_certified;
@@ -117,13 +120,14 @@ int run_check(const CheckArgs& a) {
 Command add_check(CLI::App& app) {
   auto args = std::make_shared<CheckArgs>();
   CLI::App* cmd = app.add_subcommand("check", "Certify any packing exactly: no overlap, every disk inside");
-  add_packing_files(*cmd, args->domain, args->disks, "disk file: .csv (x,y,r) or .txt/.yade (Yade x y z r)");
+  add_packing_inputs(*cmd, args->in);
   cmd->add_flag("--all", args->all, "list every disk outside and every overlapping pair");
   cmd->add_option("--json", args->json, "write the report as JSON to this file");
   cmd->add_flag("-q,--quiet", args->quiet, "print nothing but errors; the exit code tells");
   cmd->footer(
       "Example:\n"
       "  frontpack check shapes/l_shape.wkt packing.csv\n"
+      "  frontpack check --wkt 'POLYGON((0 0, 2 0, 2 1, 0 1, 0 0))' after_run.data   (LAMMPS write_data)\n"
       "Exit 0 if certified, 6 if some pair overlaps or some disk is not entirely inside (the worst of each\n"
       "is named), 7 if the disk file is malformed (the line is named).");
   return {cmd, [args] { return run_check(*args); }};

@@ -17,6 +17,7 @@
 #include "cli.hpp"
 #include "frontpack/frontpack.hpp"
 #include "outputs.hpp"
+#include "packing_inputs.hpp"
 #include "render.hpp"
 #include "report.hpp"
 
@@ -25,8 +26,7 @@ namespace frontpack_tool::cli {
 namespace {
 
 struct RenderArgs {
-  std::string domain;
-  std::string disks;
+  PackingInputs in;
   std::vector<std::string> outputs;
   std::string format;
   std::string radius;
@@ -35,7 +35,8 @@ struct RenderArgs {
   bool quiet = false;
 };
 
-int run_render(const RenderArgs& a) {
+int run_render(RenderArgs& a) {
+  resolve(a.in);
   frontpack_tool::RenderOptions picture;
   picture.width_px = a.width;
   picture.histogram = !a.no_histogram;
@@ -44,9 +45,9 @@ int run_render(const RenderArgs& a) {
     picture.requested_spec = a.radius;
   }
   const std::vector<frontpack_tool::Output> outputs = frontpack_tool::resolve_outputs(a.outputs, a.format, true);
-  frontpack_tool::check_files({{"DOMAIN", a.domain}, {"DISKS", a.disks}}, output_uses(outputs, {}));
-  const frontpack::Domain domain = frontpack::Domain::from_wkt_file(a.domain);
-  const std::vector<frontpack::Disk> disks = frontpack::read_disks(a.disks);
+  frontpack_tool::check_files(input_uses(a.in), output_uses(outputs, {}));
+  const frontpack::Domain domain = load(a.in.domain);
+  const std::vector<frontpack::Disk> disks = read_disks(a.in);
   frontpack_tool::PendingOutputs pending;
   for (const auto& o : outputs) {
     pending.write(o, domain, disks, picture, stop_token());
@@ -67,7 +68,7 @@ int run_render(const RenderArgs& a) {
 Command add_render(CLI::App& app) {
   auto args = std::make_shared<RenderArgs>();
   CLI::App* cmd = app.add_subcommand("render", "Draw a packing: PNG, SVG or PDF, disks coloured by radius");
-  add_packing_files(*cmd, args->domain, args->disks, "disk file: .csv or .txt/.yade");
+  add_packing_inputs(*cmd, args->in);
   cmd->add_option("-o,--output", args->outputs, "picture file(s): .png, .svg or .pdf")->required();
   cmd->add_option("--format", args->format, "png, svg or pdf instead of the extension");
   cmd->add_option("--width", args->width, "width in pixels (height: the domain's, plus the histogram)")

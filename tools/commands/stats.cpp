@@ -17,6 +17,7 @@
 #include "cli.hpp"
 #include "frontpack/frontpack.hpp"
 #include "outputs.hpp"
+#include "packing_inputs.hpp"
 #include "render.hpp"
 #include "report.hpp"
 
@@ -25,8 +26,7 @@ namespace frontpack_tool::cli {
 namespace {
 
 struct StatsArgs {
-  std::string domain;
-  std::string disks;
+  PackingInputs in;
   std::string radius;
   std::string json;
   std::string samples = "1000000";
@@ -45,9 +45,10 @@ double parse_radius(const char* option, const std::string& text) {
   return value;
 }
 
-int run_stats(const StatsArgs& a) {
+int run_stats(StatsArgs& a) {
+  resolve(a.in);
   frontpack::StatsOptions options;
-  std::vector<frontpack_tool::FileUse> inputs{{"DOMAIN", a.domain}, {"DISKS", a.disks}};
+  std::vector<frontpack_tool::FileUse> inputs = input_uses(a.in);
   if (!a.radius.empty()) {
     options.requested = frontpack::parse_radii(a.radius);
     add_curve_input(a.radius, inputs);
@@ -58,14 +59,14 @@ int run_stats(const StatsArgs& a) {
   }
   options.stop = stop_token();
   frontpack_tool::check_files(inputs, output_uses({}, a.json));
-  const frontpack::Domain domain = frontpack::Domain::from_wkt_file(a.domain);
-  const std::vector<frontpack::Disk> disks = frontpack::read_disks(a.disks);
+  const frontpack::Domain domain = load(a.in.domain);
+  const std::vector<frontpack::Disk> disks = read_disks(a.in);
   const frontpack::PackingStats s = frontpack::measure(domain, disks, options);
   if (!a.json.empty()) {
     Json j{{"frontpack_version", frontpack::version_string},
            {"command", "stats"},
-           {"domain", frontpack_tool::domain_json(a.domain, domain)},
-           {"disk_file", a.disks},
+           {"domain", frontpack_tool::domain_json(a.in.domain.name(), domain)},
+           {"disk_file", a.in.disks},
            {"disks", s.disks}};
     j.update(frontpack_tool::stats_json(s));
     frontpack_tool::PendingOutputs pending;
@@ -75,7 +76,7 @@ int run_stats(const StatsArgs& a) {
   if (a.quiet) {
     return ok;
   }
-  std::cout << "disks:        " << s.disks << " in " << a.disks << "\n"
+  std::cout << "disks:        " << s.disks << " in " << a.in.disks << "\n"
             << "fraction:     " << frontpack_tool::fraction_line(s) << "\n"
             << "void ratio:   " << fmt(s.void_ratio) << "\n"
             << "radii:        " << frontpack_tool::radii_line(s.sizes) << "\n";
@@ -103,7 +104,7 @@ int run_stats(const StatsArgs& a) {
 Command add_stats(CLI::App& app) {
   auto args = std::make_shared<StatsArgs>();
   CLI::App* cmd = app.add_subcommand("stats", "Packing statistics: fractions, coordination, radii");
-  add_packing_files(*cmd, args->domain, args->disks, "disk file: .csv or .txt/.yade");
+  add_packing_inputs(*cmd, args->in);
   cmd->add_option("--radius", args->radius, "compare the radii with this requested distribution");
   cmd->add_option("--samples", args->samples, "sample points for the interior and band fractions")
       ->capture_default_str();
