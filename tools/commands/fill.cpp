@@ -5,6 +5,7 @@
 #include <charconv>
 #include <cmath>
 #include <cstdint>
+#include <filesystem>
 #include <iostream>
 #include <limits>
 #include <memory>
@@ -12,6 +13,7 @@
 #include <sstream>
 #include <string>
 #include <system_error>
+#include <utility>
 #include <vector>
 
 #include "cli.hpp"
@@ -70,7 +72,59 @@ struct FillArgs {
   bool no_histogram = false;
   bool holes = false;
   bool quiet = false;
+  std::string types;                // --types RULE
+  std::vector<std::string> deck{};  // --deck SIMULATOR DIR
+  std::string density;              // --density SPEC
+  std::string thickness;            // --thickness T
+  std::string wall_radius;          // --wall-radius W
 };
+
+// A finite number > 0 for OPTION (std::from_chars, the C locale).
+double parse_positive(const char* option, const std::string& text) {
+  double value = 0;
+  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (text.empty() || ec != std::errc{} || end != text.data() + text.size() || !std::isfinite(value) || !(value > 0)) {
+    const std::string given = text.size() > 40 ? text.substr(0, 40) + "..." : text;
+    throw frontpack::OptionError(std::string(option) + " '" + given + "': expected a finite number > 0");
+  }
+  return value;
+}
+
+// The deck's options, checked before any work; the directory is created if missing.
+struct DeckPlan {
+  bool wanted = false;
+  frontpack::DeckOptions options;
+  std::filesystem::path dir;
+};
+
+DeckPlan plan_deck(const FillArgs& a, std::uint32_t types) {
+  DeckPlan plan;
+  if (a.deck.empty()) {
+    for (const auto& [name, value] : {std::pair{"--density", &a.density}, std::pair{"--thickness", &a.thickness},
+                                      std::pair{"--wall-radius", &a.wall_radius}}) {
+      if (!value->empty()) {
+        throw frontpack::OptionError(std::string(name) + " sets up a simulator deck: it needs --deck SIMULATOR DIR");
+      }
+    }
+    return plan;
+  }
+  plan.wanted = true;
+  plan.options.simulator = frontpack::simulator_from_name(a.deck[0]);
+  plan.dir = a.deck[1];
+  if (a.density.empty()) {
+    throw frontpack::OptionError(
+        "--deck needs --density: one density for all types (e.g. 2500) or one per type "
+        "(1:2500,2:7800); mass per area, or per volume with --thickness");
+  }
+  plan.options.densities = frontpack::parse_densities(a.density, types);
+  plan.options.thickness = a.thickness.empty() ? 0.0 : parse_positive("--thickness", a.thickness);
+  plan.options.wall_radius = a.wall_radius.empty() ? 0.0 : parse_positive("--wall-radius", a.wall_radius);
+  if (plan.options.simulator != frontpack::Simulator::lammps && !a.wall_radius.empty()) {
+    throw frontpack::OptionError("--wall-radius sets the LAMMPS deck's wall disks; the " +
+                                 std::string(frontpack::to_string(plan.options.simulator)) + " deck has mesh walls");
+  }
+  return plan;
+}
 
 frontpack::Method parse_method(const std::string& name) {
   if (name == "closed") {
@@ -157,9 +211,25 @@ int run_fill(const FillArgs& a) {
   options.memory_limit = parse_bytes("--memory-limit", a.memory_limit);
   options.stop = stop_token();
   const std::vector<frontpack_tool::Output> outputs = frontpack_tool::resolve_outputs(a.outputs, a.format, false);
+  const frontpack::TypeRule type_rule = a.types.empty() ? frontpack::TypeRule{} : frontpack::parse_type_rule(a.types);
+  DeckPlan deck = plan_deck(a, type_rule.count());
+  deck.options.stop = options.stop;
   std::vector<frontpack_tool::FileUse> inputs = domain_inputs(a.src);
   add_curve_input(spec, inputs);
-  frontpack_tool::check_files(inputs, output_uses(outputs, a.json));
+  for (const std::string& region : type_rule.region_names) {
+    inputs.push_back({"--types region:FILE", region});
+  }
+  std::vector<frontpack_tool::FileUse> output_files = output_uses(outputs, a.json);
+  if (deck.wanted) {
+    if (std::filesystem::exists(deck.dir) && !std::filesystem::is_directory(deck.dir)) {
+      throw frontpack::IoError("--deck directory '" + deck.dir.string() + "' is not a directory", deck.dir.string());
+    }
+    std::filesystem::create_directories(deck.dir);
+    for (const std::string& name : frontpack::deck_file_names(deck.options.simulator)) {
+      output_files.push_back({"--deck", deck.dir / name});
+    }
+  }
+  frontpack_tool::check_files(inputs, output_files);
   const frontpack::Domain domain = load(a.src);
 
   frontpack::Packing p;
@@ -200,8 +270,17 @@ int run_fill(const FillArgs& a) {
                                               .requested = options.radii,
                                               .requested_spec = spec,
                                               .stop = options.stop};
+  const std::vector<std::uint32_t> types =
+      a.types.empty() ? std::vector<std::uint32_t>{} : frontpack::assign_types(type_rule, p.disks);
   for (const auto& o : outputs) {
-    pending.write(o, domain, p.disks, picture, options.stop);
+    pending.write(o, domain, p.disks, picture, options.stop, types);
+  }
+  std::vector<std::string> deck_files;
+  if (deck.wanted) {
+    for (const frontpack::DeckFile& f : frontpack::make_deck(domain, p.disks, types, deck.options)) {
+      deck_files.push_back((deck.dir / f.name).string());
+      pending.write_text(deck.dir / f.name, f.text);
+    }
   }
   if (!a.json.empty()) {
     const Json j = fill_json(a, spec, options, domain, p, s, outputs, seconds_stats, seconds_since(t_start));
@@ -228,6 +307,9 @@ int run_fill(const FillArgs& a) {
     }
     if (!a.json.empty()) {
       std::cerr << "wrote:       " << a.json << " (summary)\n";
+    }
+    for (const std::string& f : deck_files) {
+      std::cerr << "wrote:       " << f << " (" << a.deck[0] << " deck)\n";
     }
   }
   if (p.truncated) {
@@ -264,6 +346,21 @@ Command add_fill(CLI::App& app) {
                   "format of every -o instead of the extension: csv, yade, lammps, "
                   "vtp, png, svg, pdf");
   cmd->add_option("--json", args->json, "write the summary as JSON to this file");
+  cmd->add_option("--types", args->types,
+                  "per-disk types (1-based) for every output: size:E1,E2,... (radius bin edges: r < E1 is type 1, "
+                  "E1 <= r < E2 type 2, ...) or region:A.wkt,B.wkt,... (a centre in the closed region k is type "
+                  "k+1, the first region wins; else 1)");
+  cmd->add_option("--deck", args->deck,
+                  "SIMULATOR DIR: write a deck that runs as it is into DIR (created if missing): lammps, liggghts or "
+                  "yade (docs/simulators.md)")
+      ->expected(2);
+  cmd->add_option("--density", args->density,
+                  "with --deck: density of every type (2500) or per type (1:2500,2:7800); mass per area, or per "
+                  "volume with --thickness");
+  cmd->add_option("--thickness", args->thickness,
+                  "with --deck: the disks are cylinders this thick and --density is per volume");
+  cmd->add_option("--wall-radius", args->wall_radius,
+                  "with --deck lammps: radius of the frozen wall disks (default: the smallest radius)");
   cmd->add_option("--width", args->width, "picture width in pixels")->capture_default_str();
   cmd->add_flag("--no-histogram", args->no_histogram,
                 "pictures without the size-distribution panel (histogram by area, KS distance)");
