@@ -152,7 +152,7 @@ class DiskFileError : public Error {
     non_finite,          ///< nan or inf
     bad_radius,          ///< a radius <= 0
     nonzero_z,           ///< a Yade z coordinate other than 0
-    unsupported_format,  ///< a Yade "#format" other than x_y_z_r
+    unsupported_format,  ///< a Yade "#format" other than x_y_z_r or x_y_z_r_matId
   };
   DiskFileError(Kind kind, std::string detail, std::string source, std::size_t line, std::size_t column = 0);
 

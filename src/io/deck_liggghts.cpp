@@ -6,6 +6,7 @@
 // about one particle diameter: the box and the mesh are made 20 rmax thick in z, which changes
 // nothing for particles held in the plane z = 0.
 #include <algorithm>
+#include <cmath>
 #include <sstream>
 #include <string>
 
@@ -19,8 +20,9 @@ namespace frontpack::detail {
 
 namespace {
 
-// Every edge as a vertical quad (two triangles) from z = -h to z = h; facet normals point out of
-// the domain.
+// Every edge as vertical quads (two triangles each) from z = -h to z = h, the edge cut into
+// pieces at most 2 h long; facet normals point out of the domain. LIGGGHTS bins the mesh by its
+// largest triangle: one much longer than the box is thick fails the same assertion as a thin box.
 std::string edge_mesh(const Domain& domain, double h, const std::stop_token& stop) {
   std::ostringstream out;
   const std::string lo = format_double(-h);
@@ -31,18 +33,31 @@ std::string edge_mesh(const Domain& domain, double h, const std::stop_token& sto
     for (std::size_t r = 0; r <= p.holes.size(); ++r) {
       const Ring& ring = r == 0 ? p.outer : p.holes[r - 1];
       for (std::size_t i = 0; i < ring.size(); ++i) {
-        throw_if_stopped(stop, count++);
         const Point a = ring[i];
         const Point b = ring[(i + 1) % ring.size()];
-        const std::string ax = format_double(a.x) + ' ' + format_double(a.y) + ' ';
-        const std::string bx = format_double(b.x) + ' ' + format_double(b.y) + ' ';
         const std::string normal = format_double(b.y - a.y) + ' ' + format_double(a.x - b.x) + " 0";
-        const auto facet = [&](const std::string& v1, const std::string& v2, const std::string& v3) {
-          out << "facet normal " << normal << "\nouter loop\nvertex " << v1 << "\nvertex " << v2 << "\nvertex " << v3
-              << "\nendloop\nendfacet\n";
+        const auto pieces = static_cast<std::size_t>(std::ceil(std::hypot(b.x - a.x, b.y - a.y) / (2 * h)));
+        const auto at = [&](std::size_t k) {
+          if (k == 0) {
+            return format_double(a.x) + ' ' + format_double(a.y) + ' ';
+          }
+          if (k == pieces) {
+            return format_double(b.x) + ' ' + format_double(b.y) + ' ';
+          }
+          const double t = static_cast<double>(k) / static_cast<double>(pieces);
+          return format_double(a.x + (b.x - a.x) * t) + ' ' + format_double(a.y + (b.y - a.y) * t) + ' ';
         };
-        facet(ax + lo, bx + lo, bx + hi);
-        facet(ax + lo, bx + hi, ax + hi);
+        for (std::size_t k = 0; k < pieces; ++k) {
+          throw_if_stopped(stop, count++);
+          const std::string u = at(k);
+          const std::string v = at(k + 1);
+          const auto facet = [&](const std::string& v1, const std::string& v2, const std::string& v3) {
+            out << "facet normal " << normal << "\nouter loop\nvertex " << v1 << "\nvertex " << v2 << "\nvertex " << v3
+                << "\nendloop\nendfacet\n";
+          };
+          facet(u + lo, v + lo, v + hi);
+          facet(u + lo, v + hi, u + hi);
+        }
       }
     }
   }
@@ -107,6 +122,8 @@ std::vector<DeckFile> liggghts_deck(const Domain& domain, std::span<const Disk> 
      << ", the weight of a column as tall as the\n"
      << "# domain and 2 rmax wide, press two smallest disks " << format_double(p.overlap)
      << " (1% of rmin) deep: E = 2 (1 - 0.3^2) 3 F / (4 sqrt(rmin/2) d^1.5).\n"
+     << "# (LIGGGHTS refuses E > 1e9 in SI units unless told that the particles are hard.)\n"
+     << "hard_particles yes\n"
      << "fix m1 all property/global youngsModulus peratomtype" << repeat(format_double(p.hertz_modulus), n) << "\n"
      << "fix m2 all property/global poissonsRatio peratomtype" << repeat("0.3", n) << "\n"
      << "fix m3 all property/global coefficientRestitution peratomtypepair " << n << repeat("0.5", n * n) << "\n"

@@ -168,7 +168,8 @@ std::vector<Disk> read_csv(std::istream& in, std::string_view source_name, std::
   const std::vector<std::string_view> header = split(lines.text(), ',');
   const bool typed = header.size() == 4 && header[3] == "type";
   if ((header.size() != 3 && !typed) || header[0] != "x" || header[1] != "y" || header[2] != "r") {
-    lines.fail(Kind::missing_header, "expected the header line 'x,y,r' (or 'x,y,r,type'), got " + quote(lines.text()));
+    lines.fail(Kind::missing_header, "expected the header line 'x,y,r', got " + quote(lines.text()) +
+                                         " (or 'x,y,r,type' with a type column)");
   }
   const std::size_t columns = typed ? 4 : 3;
   std::vector<Disk> disks;
