@@ -248,7 +248,9 @@ TEST(IoRead, MalformedYadeNamesTheLine) {
   using K = fp::DiskFileError::Kind;
   const Bad cases[] = {
       {"", K::empty_file, 1, 0, "disks.txt:1: empty file"},
-      {"#format x_y_z_r_matId\n1 2 0 3 1\n", K::unsupported_format, 1, 1, "frontpack reads '#format x_y_z_r' only"},
+      {"#format x_y_z_r_attrs\n1 2 0 3 1\n", K::unsupported_format, 1, 1, "frontpack reads '#format x_y_z_r' and"},
+      {"#format x_y_z_r_matId\n1 2 0 3 -1\n", K::bad_number, 2, 9, "matId '-1' is not a whole number >= 0"},
+      {"#format x_y_z_r_matId\n1 2 0 3\n", K::field_count, 2, 0, "expected 5 numbers 'x y z r matId'"},
       {"#format\n", K::unsupported_format, 1, 1, "unsupported"},
       {"#format x_y_z_r\n1 2 0 0.5\n1 2 0\n", K::field_count, 3, 0,
        "disks.txt:3: expected 4 numbers 'x y z r' separated by spaces, got '1 2 0'"},

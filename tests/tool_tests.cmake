@@ -349,3 +349,35 @@ frontpack_tool_test(fill_window_bad 5 "--window -2: expected a whole number" fil
 # --progress in a log: every phase named, the generation at 100%.
 frontpack_tool_test(fill_progress_log 0 "progress: generating +100% of area.*progress: certifying [0-9]+ disks.*progress: measuring.*progress: writing .*fill_progress_log\\.csv.*disks: "
   fill ${SQ} --radius uniform:0.01,0.02 --progress -o ${TOOL_OUT}/fill_progress_log.csv)
+# Types and simulator decks (fill --types, --deck): the options' errors, refused before any work.
+set(deck_dir ${CMAKE_CURRENT_BINARY_DIR}/tool_deck)
+frontpack_tool_test(fill_types_bad_edges 5 "type rule size: edges must increase strictly"
+  fill ${S}/l_shape.wkt --radius uniform:0.02,0.08 --types size:0.05,0.03 -o ${CMAKE_CURRENT_BINARY_DIR}/t.csv)
+frontpack_tool_test(fill_types_unknown 5 "expected size:E1,E2,... .* or region:A.wkt"
+  fill ${S}/l_shape.wkt --types colour:red)
+frontpack_tool_test(fill_types_missing_region 2 "cannot open '/nonexistent/r.wkt'"
+  fill ${S}/l_shape.wkt --types region:/nonexistent/r.wkt)
+frontpack_tool_test(fill_deck_unknown 5 "unknown simulator 'gromacs'; expected lammps, liggghts or yade"
+  fill ${S}/l_shape.wkt --deck gromacs ${deck_dir} --density 2500)
+frontpack_tool_test(fill_deck_needs_density 5 "--deck needs --density"
+  fill ${S}/l_shape.wkt --deck lammps ${deck_dir})
+frontpack_tool_test(fill_density_needs_deck 5 "--density sets up a simulator deck: it needs --deck"
+  fill ${S}/l_shape.wkt --density 2500)
+frontpack_tool_test(fill_density_per_type 5 "no density for type 2"
+  fill ${S}/l_shape.wkt --types size:0.05 --deck lammps ${deck_dir} --density 1:2500)
+frontpack_tool_test(fill_density_bad_type 5 "expected TYPE:DENSITY with TYPE from 1 to 1"
+  fill ${S}/l_shape.wkt --deck lammps ${deck_dir} --density 2:2500)
+frontpack_tool_test(fill_bad_thickness 5 "--thickness '-1': expected a finite number > 0"
+  fill ${S}/l_shape.wkt --deck lammps ${deck_dir} --density 2500 --thickness -1)
+frontpack_tool_test(fill_wall_radius_lammps_only 5 "--wall-radius sets the LAMMPS deck's wall disks"
+  fill ${S}/l_shape.wkt --deck yade ${deck_dir} --density 2500 --wall-radius 0.01)
+frontpack_tool_test(fill_deck_is_a_file 2 "is not a directory"
+  fill ${S}/l_shape.wkt --deck lammps ${S}/l_shape.wkt --density 2500)
+frontpack_tool_test(fill_deck_walls_too_large 5 "walls: .*use a smaller wall radius"
+  fill --wkt "POLYGON((0 0,1 0,1 1,0 1,0 0),(0.5 0.5,0.5 0.51,0.51 0.51,0.51 0.5,0.5 0.5))" --radius uniform:0.02,0.04
+  --deck lammps ${deck_dir} --density 2500 --wall-radius 0.1)
+set(O ${TOOL_OUT}/fill_deck_lammps)
+frontpack_tool_check(fill_deck_lammps 0 "wrote: +.*in.frontpack \\(lammps deck\\)"
+  FILES ${O}/deck/deck.data ${O}/deck/in.frontpack ${O}/p.csv FILE_MATCHES ${O}/p.csv "^x,y,r,type\n"
+  ARGS fill ${S}/l_shape.wkt --radius uniform:0.02,0.08 --types size:0.05 -o ${O}/p.csv --deck lammps ${O}/deck
+       --density 1:2500,2:7800)

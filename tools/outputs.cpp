@@ -154,7 +154,8 @@ frontpack::OutputFile& PendingOutputs::open(const std::filesystem::path& path) {
 }
 
 void PendingOutputs::write(const Output& output, const frontpack::Domain& domain,
-                           std::span<const frontpack::Disk> disks, const RenderOptions& picture, std::stop_token stop) {
+                           std::span<const frontpack::Disk> disks, const RenderOptions& picture, std::stop_token stop,
+                           std::span<const std::uint32_t> types) {
   frontpack::OutputFile& file = open(output.path);
   if (const auto* format = std::get_if<Picture>(&output.format)) {
     RenderOptions options = picture;
@@ -163,6 +164,7 @@ void PendingOutputs::write(const Output& output, const frontpack::Domain& domain
   } else {
     frontpack::WriteOptions options;
     options.svg.width_px = picture.width_px;
+    options.types = types;
     options.stop = std::move(stop);
     frontpack::write(file.stream(), std::get<frontpack::Format>(output.format), domain, disks, options);
   }

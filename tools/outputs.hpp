@@ -71,9 +71,9 @@ class PendingOutputs {
 
   /// Opens the next output (frontpack::OutputFile); the reference stays valid until destruction.
   frontpack::OutputFile& open(const std::filesystem::path& path);
-  /// Writes a data format or draws a picture into a new output.
+  /// Writes a data format (with the disks' types, if any) or draws a picture into a new output.
   void write(const Output& output, const frontpack::Domain& domain, std::span<const frontpack::Disk> disks,
-             const RenderOptions& picture, std::stop_token stop);
+             const RenderOptions& picture, std::stop_token stop, std::span<const std::uint32_t> types = {});
   /// Writes text (a JSON summary) into a new output.
   void write_text(const std::filesystem::path& path, const std::string& text);
   /// Commits every output in order, unless `stop` was requested first (then throws

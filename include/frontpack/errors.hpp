@@ -152,8 +152,8 @@ class DiskFileError : public Error {
     non_finite,          ///< nan or inf
     bad_radius,          ///< a radius <= 0
     nonzero_z,           ///< a Yade z coordinate other than 0
-    unsupported_format,  ///< a Yade "#format" other than x_y_z_r, a LAMMPS atom style other than sphere,
-                         ///< VTK data compressed or in a layout frontpack does not read
+    unsupported_format,  ///< a Yade "#format" other than x_y_z_r or x_y_z_r_matId, a LAMMPS atom style
+                         ///< other than sphere, VTK data compressed or in a layout frontpack does not read
     syntax,              ///< a line or XML element that is not what the format has there
     missing_item,        ///< a required header, section, column, element or array is absent
     count_mismatch,      ///< fewer or more entries than the file declares (atoms, points, values)

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "frontpack/certify.hpp"
+#include "frontpack/deck.hpp"
 #include "frontpack/domain.hpp"
 #include "frontpack/errors.hpp"
 #include "frontpack/fill.hpp"
@@ -11,4 +12,5 @@
 #include "frontpack/output_file.hpp"
 #include "frontpack/sizes.hpp"
 #include "frontpack/stats.hpp"
+#include "frontpack/types.hpp"
 #include "frontpack/version.hpp"

@@ -20,6 +20,7 @@
 #include <stop_token>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "frontpack/domain.hpp"
@@ -62,13 +63,21 @@ struct LammpsOptions {
   /// mass = density * (4/3) pi r^3 even with `dimension 2`; for a mass per area, set the masses
   /// after read_data (or use `set ... density/disc` where your LAMMPS has it).
   double density = 1.0;
-  std::int64_t atom_type = 1;  ///< type of every atom, >= 1; the header declares this many atom types
+  std::int64_t atom_type = 1;  ///< type of every atom without per-disk types, >= 1; the header declares this many
+  /// With per-disk types: the density of type t is type_densities[t - 1] (when not empty; it must
+  /// cover every type), else `density`.
+  std::vector<double> type_densities{};
+  /// With per-disk types: the "N atom types" of the header, >= the largest type (0: the largest type).
+  std::int64_t atom_types = 0;
 };
 
 /// Options of write() and write_file(), per format.
 struct WriteOptions {
   SvgStyle svg;
   LammpsOptions lammps;
+  /// Per-disk types (frontpack/types.hpp), empty or one >= 1 per disk; the writers carry them:
+  /// CSV column "type", Yade matId = type - 1, LAMMPS type column, VTP Int32 array "type".
+  std::span<const std::uint32_t> types{};
   /// Once a stop is requested, the writer throws CancelledError (within a few thousand disks);
   /// write_file() then leaves the target as it was.
   std::stop_token stop{};
@@ -79,13 +88,27 @@ struct WriteOptions {
 void write_svg(std::ostream& out, const Domain& domain, std::span<const Disk> disks, const SvgStyle& style = {},
                std::stop_token stop = {});
 
-/// CSV: a header line "x,y,r", then one line "x,y,r" per disk (centre and radius), in order.
-void write_csv(std::ostream& out, std::span<const Disk> disks, std::stop_token stop = {});
+/// CSV: a header line "x,y,r", then one line "x,y,r" per disk (centre and radius), in order. With
+/// types (one per disk, else OptionError): "x,y,r,type" and a fourth column.
+void write_csv(std::ostream& out, std::span<const Disk> disks, std::span<const std::uint32_t> types,
+               std::stop_token stop = {});
+inline void write_csv(std::ostream& out, std::span<const Disk> disks, std::stop_token stop = {}) {
+  write_csv(out, disks, std::span<const std::uint32_t>{}, std::move(stop));
+}
 
-/// Yade text for `ymport.textExt(file, format='x_y_z_r')` (or `ymport.text(file)`): a first line
-/// "#format x_y_z_r", then one line "x y 0 r" per disk, in order (centre, z = 0, radius), separated
-/// by single spaces, no blank lines (textExt fails on a blank line).
-void write_yade(std::ostream& out, std::span<const Disk> disks, std::stop_token stop = {});
+/// Yade text: one line "x y 0 r" per disk, in order (centre, z = 0, radius), separated by single
+/// spaces, no header and no blank lines, so that both `ymport.textExt(file)` (format x_y_z_r, its
+/// default) and `pack.SpherePack().load(file)` read it (SpherePack refuses any '#' line; textExt
+/// fails on a blank line). An empty packing is the single line "#format x_y_z_r".
+/// With types (one per disk, else OptionError): a first line "#format x_y_z_r_matId" and lines
+/// "x y 0 r m" with m = type - 1, Yade's material index (O.materials[m]: append one material per
+/// type, in type order, before textExt). SpherePack.load refuses such a file, rightly: its fifth
+/// column would be a clump id.
+void write_yade(std::ostream& out, std::span<const Disk> disks, std::span<const std::uint32_t> types,
+                std::stop_token stop = {});
+inline void write_yade(std::ostream& out, std::span<const Disk> disks, std::stop_token stop = {}) {
+  write_yade(out, disks, std::span<const std::uint32_t>{}, std::move(stop));
+}
 
 /// LAMMPS data file for `atom_style sphere` (read with `read_data`; with `dimension 2` use
 /// `boundary f f p` or `p p p`):
@@ -103,14 +126,24 @@ void write_yade(std::ostream& out, std::span<const Disk> disks, std::stop_token 
 /// does not contain every disk fully (decided exactly: x - r >= xmin and x + r <= xmax in floating
 /// point are exact tests, because rounding is monotone and the bounds are doubles), or if an option
 /// is out of range.
-void write_lammps(std::ostream& out, std::span<const Disk> disks, const Box& box, const LammpsOptions& options = {},
-                  std::stop_token stop = {});
+/// With types (one per disk, else OptionError), each atom's type and its type's density.
+void write_lammps(std::ostream& out, std::span<const Disk> disks, std::span<const std::uint32_t> types, const Box& box,
+                  const LammpsOptions& options = {}, std::stop_token stop = {});
+inline void write_lammps(std::ostream& out, std::span<const Disk> disks, const Box& box,
+                         const LammpsOptions& options = {}, std::stop_token stop = {}) {
+  write_lammps(out, disks, std::span<const std::uint32_t>{}, box, options, std::move(stop));
+}
 
 /// VTK XML PolyData (ASCII, version 1.0), for ParaView: one point per disk centre (Float64, z = 0),
 /// one vertex cell per point, and point data `radius` (Float64, the active scalars: use it as the
 /// scale array of the Point Gaussian representation or of a Glyph filter for true sizes) and `id`
-/// (Int64, the disk's 0-based index in `disks`).
-void write_vtp(std::ostream& out, std::span<const Disk> disks, std::stop_token stop = {});
+/// (Int64, the disk's 0-based index in `disks`); with types (one per disk, else OptionError), also
+/// `type` (Int32).
+void write_vtp(std::ostream& out, std::span<const Disk> disks, std::span<const std::uint32_t> types,
+               std::stop_token stop = {});
+inline void write_vtp(std::ostream& out, std::span<const Disk> disks, std::stop_token stop = {}) {
+  write_vtp(out, disks, std::span<const std::uint32_t>{}, std::move(stop));
+}
 
 /// Writes `disks` (and, for SVG, the domain; for LAMMPS, the domain's bounding box as the box) to
 /// `out` in `format`, with the writer of that format.
@@ -133,13 +166,21 @@ void write_file(const std::filesystem::path& path, Format format, const Domain& 
 /// to 0 ("1e-400"); subnormal values ("5e-324") are read (README, "Numbers"). `source_name` (a
 /// file name; "<input>" if empty) goes into the messages, and the offending text, escaped (a NUL
 /// byte shows as \0) and cut to 40 characters. Throws DiskFileError naming the line.
+/// The header may also be "x,y,r,type", with a fourth column of whole numbers >= 1 (types).
 [[nodiscard]] std::vector<Disk> read_csv(std::istream& in, std::string_view source_name);
+/// As read_csv, and the types into `types` (empty when the file has no type column).
+[[nodiscard]] std::vector<Disk> read_csv(std::istream& in, std::string_view source_name,
+                                         std::vector<std::uint32_t>& types);
 
 /// Reads Yade text as written by write_yade: lines of four numbers "x y z r" separated by spaces
 /// or tabs, where z must be 0 (frontpack's disks are planar); lines starting with '#' are
-/// comments, except "#format F", where F must be x_y_z_r (the default of textExt). Numbers and
-/// the other rules as read_csv (no header required). Throws DiskFileError naming the line.
+/// comments, except "#format F", where F must be x_y_z_r (the default of textExt) or x_y_z_r_matId
+/// (a fifth column, a whole number m >= 0: type m + 1). Numbers and the other rules as read_csv
+/// (no header required). Throws DiskFileError naming the line.
 [[nodiscard]] std::vector<Disk> read_yade(std::istream& in, std::string_view source_name);
+/// As read_yade, and the types into `types` (empty without "#format x_y_z_r_matId").
+[[nodiscard]] std::vector<Disk> read_yade(std::istream& in, std::string_view source_name,
+                                          std::vector<std::uint32_t>& types);
 
 /// Reads a LAMMPS data file of atom_style sphere: as write_lammps writes it, and as LAMMPS's
 /// `write_data` writes it after a run. The first line is the title. Header lines, in any order:

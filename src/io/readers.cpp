@@ -1,9 +1,12 @@
 // Readers of disk files: CSV and Yade text, strict, exact (std::from_chars), locale-independent.
 #include <cerrno>
+#include <charconv>
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 #include <fstream>
 #include <istream>
+#include <limits>
 #include <string>
 #include <string_view>
 #include <system_error>
@@ -130,32 +133,66 @@ std::vector<std::string_view> tokens(std::string_view line) {
   return out;
 }
 
+// A type: a whole number >= 1 (CSV) or a Yade matId >= 0 (then type = matId + 1), digits only.
+std::uint32_t parse_type(const Lines& lines, std::string_view field, std::uint32_t base, const char* what) {
+  std::uint32_t value = 0;
+  const auto [end, ec] = std::from_chars(field.data(), field.data() + field.size(), value);
+  const bool digits = !field.empty() && field.find_first_not_of("0123456789") == std::string_view::npos;
+  if (!digits || ec != std::errc{} || end != field.data() + field.size() || value + base < 1 ||
+      value == std::numeric_limits<std::uint32_t>::max()) {
+    lines.fail(Kind::bad_number,
+               std::string(what) + " " + quote(field) + " is not a whole number >= " + (base == 0 ? "1" : "0"),
+               lines.column_of(field));
+  }
+  return value + base;
+}
+
 }  // namespace
 
 std::vector<Disk> read_csv(std::istream& in, std::string_view source_name) {
+  std::vector<std::uint32_t> types;
+  return read_csv(in, source_name, types);
+}
+
+std::vector<Disk> read_yade(std::istream& in, std::string_view source_name) {
+  std::vector<std::uint32_t> types;
+  return read_yade(in, source_name, types);
+}
+
+std::vector<Disk> read_csv(std::istream& in, std::string_view source_name, std::vector<std::uint32_t>& types) {
+  types.clear();
   Lines lines(in, source_name);
   if (!lines.next()) {
     lines.fail(Kind::empty_file, "empty file (expected the header line 'x,y,r')");
   }
   const std::vector<std::string_view> header = split(lines.text(), ',');
-  if (header.size() != 3 || header[0] != "x" || header[1] != "y" || header[2] != "r") {
-    lines.fail(Kind::missing_header, "expected the header line 'x,y,r', got " + quote(lines.text()));
+  const bool typed = header.size() == 4 && header[3] == "type";
+  if ((header.size() != 3 && !typed) || header[0] != "x" || header[1] != "y" || header[2] != "r") {
+    lines.fail(Kind::missing_header, "expected the header line 'x,y,r', got " + quote(lines.text()) +
+                                         " (or 'x,y,r,type' with a type column)");
   }
+  const std::size_t columns = typed ? 4 : 3;
   std::vector<Disk> disks;
   while (lines.next()) {
     if (trim(lines.text()).empty()) {
       lines.fail(Kind::blank_line, "blank line (a disk file has none)");
     }
     const std::vector<std::string_view> f = split(lines.text(), ',');
-    if (f.size() != 3) {
-      lines.fail(Kind::field_count, "expected 3 comma-separated numbers, got " + quote(lines.text()));
+    if (f.size() != columns) {
+      lines.fail(Kind::field_count,
+                 "expected " + std::to_string(columns) + " comma-separated numbers, got " + quote(lines.text()));
     }
     disks.push_back(make_disk(lines, f[0], f[1], f[2]));
+    if (typed) {
+      types.push_back(parse_type(lines, f[3], 0, "type"));
+    }
   }
   return disks;
 }
 
-std::vector<Disk> read_yade(std::istream& in, std::string_view source_name) {
+std::vector<Disk> read_yade(std::istream& in, std::string_view source_name, std::vector<std::uint32_t>& types) {
+  types.clear();
+  bool typed = false;
   Lines lines(in, source_name);
   std::vector<Disk> disks;
   bool any = false;
@@ -166,24 +203,32 @@ std::vector<Disk> read_yade(std::istream& in, std::string_view source_name) {
       lines.fail(Kind::blank_line, "blank line (Yade's ymport.textExt fails on it)");
     }
     if (t[0] == "#format") {
-      if (t.size() < 2 || t[1] != "x_y_z_r") {
+      if (t.size() < 2 || (t[1] != "x_y_z_r" && t[1] != "x_y_z_r_matId") ||
+          (typed != (t[1] != "x_y_z_r") && !disks.empty())) {
         lines.fail(Kind::unsupported_format,
-                   "unsupported " + quote(lines.text()) + " (frontpack reads '#format x_y_z_r' only)",
+                   "unsupported " + quote(lines.text()) +
+                       " (frontpack reads '#format x_y_z_r' and '#format x_y_z_r_matId', before the first disk)",
                    lines.column_of(t[0]));
       }
+      typed = t[1] == "x_y_z_r_matId";
       continue;
     }
     if (t[0].front() == '#') {
       continue;  // a comment, as for textExt
     }
-    if (t.size() != 4) {
-      lines.fail(Kind::field_count, "expected 4 numbers 'x y z r' separated by spaces, got " + quote(lines.text()));
+    if (t.size() != (typed ? 5U : 4U)) {
+      lines.fail(Kind::field_count,
+                 std::string(typed ? "expected 5 numbers 'x y z r matId'" : "expected 4 numbers 'x y z r'") +
+                     " separated by spaces, got " + quote(lines.text()));
     }
     if (parse_number(lines, t[2], "z") != 0) {
       lines.fail(Kind::nonzero_z, "z must be 0 (frontpack's disks are planar), got " + quote(t[2]),
                  lines.column_of(t[2]));
     }
     disks.push_back(make_disk(lines, t[0], t[1], t[3]));
+    if (typed) {
+      types.push_back(parse_type(lines, t[4], 1, "matId"));
+    }
   }
   if (!any) {
     lines.fail(Kind::empty_file, "empty file (expected '#format x_y_z_r' and lines 'x y 0 r')");

@@ -23,6 +23,22 @@ std::string fixed(double v) {
   return buf;
 }
 
+// Types, when given, must be one per disk and >= 1.
+void check_types(const char* format, std::span<const Disk> disks, std::span<const std::uint32_t> types) {
+  if (types.empty()) {
+    return;
+  }
+  if (types.size() != disks.size()) {
+    throw OptionError(std::string(format) + " writer: " + std::to_string(types.size()) + " types for " +
+                      std::to_string(disks.size()) + " disks (expected one type per disk)");
+  }
+  for (std::size_t i = 0; i < types.size(); ++i) {
+    if (types[i] < 1) {
+      throw OptionError(std::string(format) + " writer: disk " + std::to_string(i) + " has type 0 (types are >= 1)");
+    }
+  }
+}
+
 constexpr const char* known_extensions = ".csv, .txt or .yade (Yade), .data or .lmp (LAMMPS), .vtp, .svg";
 
 }  // namespace
@@ -123,30 +139,49 @@ void write_svg(std::ostream& out, const Domain& domain, std::span<const Disk> di
   out << "</g>\n</svg>\n";
 }
 
-void write_csv(std::ostream& out, std::span<const Disk> disks, std::stop_token stop) {
-  out << "x,y,r\n";
+void write_csv(std::ostream& out, std::span<const Disk> disks, std::span<const std::uint32_t> types,
+               std::stop_token stop) {
+  check_types("CSV", disks, types);
+  out << (types.empty() ? "x,y,r\n" : "x,y,r,type\n");
   for (std::size_t i = 0; i < disks.size(); ++i) {
     detail::throw_if_stopped(stop, i);
     const Disk& d = disks[i];
     out << detail::format_double(d.centre.x) << ',' << detail::format_double(d.centre.y) << ','
-        << detail::format_double(d.radius) << '\n';
+        << detail::format_double(d.radius);
+    if (!types.empty()) {
+      out << ',' << types[i];
+    }
+    out << '\n';
   }
 }
 
-void write_yade(std::ostream& out, std::span<const Disk> disks, std::stop_token stop) {
+void write_yade(std::ostream& out, std::span<const Disk> disks, std::span<const std::uint32_t> types,
+                std::stop_token stop) {
   // ymport.textExt splits each line on whitespace, takes "#format F" as the format, skips other
   // lines starting with '#', and fails on a blank line: so no blank line, not even at the end.
-  out << "#format x_y_z_r\n";
+  // SpherePack.load takes lines of 4 (x y z r) or 5 (x y z r clumpId) columns and refuses any
+  // other line, '#' lines included: so no header unless the matId column needs one.
+  check_types("Yade", disks, types);
+  if (!types.empty()) {
+    out << "#format x_y_z_r_matId\n";
+  } else if (disks.empty()) {
+    out << "#format x_y_z_r\n";
+  }
   for (std::size_t i = 0; i < disks.size(); ++i) {
     detail::throw_if_stopped(stop, i);
     const Disk& d = disks[i];
     out << detail::format_double(d.centre.x) << ' ' << detail::format_double(d.centre.y) << " 0 "
-        << detail::format_double(d.radius) << '\n';
+        << detail::format_double(d.radius);
+    if (!types.empty()) {
+      out << ' ' << types[i] - 1;
+    }
+    out << '\n';
   }
 }
 
-void write_lammps(std::ostream& out, std::span<const Disk> disks, const Box& box, const LammpsOptions& options,
-                  std::stop_token stop) {
+void write_lammps(std::ostream& out, std::span<const Disk> disks, std::span<const std::uint32_t> types, const Box& box,
+                  const LammpsOptions& options, std::stop_token stop) {
+  check_types("LAMMPS", disks, types);
   if (!(std::isfinite(options.density) && options.density > 0)) {
     throw OptionError("LAMMPS density " + detail::format_double(options.density) + " must be a finite number > 0");
   }
@@ -175,7 +210,28 @@ void write_lammps(std::ostream& out, std::span<const Disk> disks, const Box& box
   // diameter thick, the packing is also a valid monolayer for a 3D run.
   const std::string zhi = detail::format_double(rmax > 0 ? rmax : 0.5);
   const std::string density = detail::format_double(options.density);
-  const std::string type = std::to_string(options.atom_type);
+  std::string type = std::to_string(options.atom_type);
+  std::vector<std::string> densities;  // per type, with types
+  if (!types.empty()) {
+    const std::uint32_t largest = *std::max_element(types.begin(), types.end());
+    if (options.atom_types != 0 && options.atom_types < largest) {
+      throw OptionError("LAMMPS atom types " + std::to_string(options.atom_types) + " is below the largest type " +
+                        std::to_string(largest));
+    }
+    type = std::to_string(options.atom_types != 0 ? options.atom_types : std::int64_t{largest});
+    if (!options.type_densities.empty() && options.type_densities.size() < largest) {
+      throw OptionError("LAMMPS type densities: " + std::to_string(options.type_densities.size()) +
+                        " given, but the largest type is " + std::to_string(largest));
+    }
+    for (std::uint32_t t = 1; t <= largest; ++t) {
+      const double rho = options.type_densities.empty() ? options.density : options.type_densities[t - 1];
+      if (!(std::isfinite(rho) && rho > 0)) {
+        throw OptionError("LAMMPS density of type " + std::to_string(t) + ", " + detail::format_double(rho) +
+                          ", must be a finite number > 0");
+      }
+      densities.push_back(detail::format_double(rho));
+    }
+  }
   out << "LAMMPS data file (atom_style sphere, 2D: z = 0) written by frontpack " << version_string << "\n\n"
       << disks.size() << " atoms\n"
       << type << " atom types\n\n"
@@ -186,12 +242,19 @@ void write_lammps(std::ostream& out, std::span<const Disk> disks, const Box& box
   for (std::size_t i = 0; i < disks.size(); ++i) {
     detail::throw_if_stopped(stop, i);
     const Disk& d = disks[i];
-    out << i + 1 << ' ' << type << ' ' << detail::format_double(2 * d.radius) << ' ' << density << ' '
+    if (types.empty()) {
+      out << i + 1 << ' ' << type << ' ';
+    } else {
+      out << i + 1 << ' ' << types[i] << ' ';
+    }
+    out << detail::format_double(2 * d.radius) << ' ' << (types.empty() ? density : densities[types[i] - 1]) << ' '
         << detail::format_double(d.centre.x) << ' ' << detail::format_double(d.centre.y) << " 0\n";
   }
 }
 
-void write_vtp(std::ostream& out, std::span<const Disk> disks, std::stop_token stop) {
+void write_vtp(std::ostream& out, std::span<const Disk> disks, std::span<const std::uint32_t> types,
+               std::stop_token stop) {
+  check_types("VTP", disks, types);
   // File format version 1.0: "offsets" holds each cell's end (version 2.0 would add a leading 0).
   const std::string n = std::to_string(disks.size());
   out << "<?xml version=\"1.0\"?>\n"
@@ -210,6 +273,14 @@ void write_vtp(std::ostream& out, std::span<const Disk> disks, std::stop_token s
   for (std::size_t i = 0; i < disks.size(); ++i) {
     detail::throw_if_stopped(stop, i);
     out << i << '\n';
+  }
+  if (!types.empty()) {
+    out << "        </DataArray>\n"
+        << "        <DataArray type=\"Int32\" Name=\"type\" format=\"ascii\">\n";
+    for (std::size_t i = 0; i < types.size(); ++i) {
+      detail::throw_if_stopped(stop, i);
+      out << types[i] << '\n';
+    }
   }
   out << "        </DataArray>\n"
       << "      </PointData>\n"
@@ -243,10 +314,10 @@ void write_vtp(std::ostream& out, std::span<const Disk> disks, std::stop_token s
 void write(std::ostream& out, Format format, const Domain& domain, std::span<const Disk> disks,
            const WriteOptions& options) {
   switch (format) {
-    case Format::csv: write_csv(out, disks, options.stop); break;
-    case Format::yade: write_yade(out, disks, options.stop); break;
-    case Format::lammps: write_lammps(out, disks, domain.bbox(), options.lammps, options.stop); break;
-    case Format::vtp: write_vtp(out, disks, options.stop); break;
+    case Format::csv: write_csv(out, disks, options.types, options.stop); break;
+    case Format::yade: write_yade(out, disks, options.types, options.stop); break;
+    case Format::lammps: write_lammps(out, disks, options.types, domain.bbox(), options.lammps, options.stop); break;
+    case Format::vtp: write_vtp(out, disks, options.types, options.stop); break;
     case Format::svg: write_svg(out, domain, disks, options.svg, options.stop); break;
   }
 }

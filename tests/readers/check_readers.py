@@ -10,7 +10,8 @@ Python's float(), which rounds correctly, independently of frontpack's readers. 
   lammps  `lmp` runs read_data on packing.data (units lj, dimension 2, atom_style sphere) and
           dumps id, type, radius, diameter, mass, x, y, z with 17 significant digits;
   vtk     vtkXMLPolyDataReader reads packing.vtp (points, vertex cells, radius and id arrays);
-  yade    `yade -n -x yade_import.py` runs ymport.textExt(packing.txt, format='x_y_z_r').
+  yade    `yade -n -x yade_import.py` runs ymport.textExt(packing.txt, format='x_y_z_r') and
+          pack.SpherePack().load(packing.txt).
 
 Every disk must come back with exactly the written doubles: same count, same order, same x, y,
 radius (LAMMPS: diameter = 2 r), z = 0.
@@ -169,6 +170,9 @@ def check_yade(work, want):
     if counts != [str(len(want))]:
         fail("Yade holds %r bodies, frontpack wrote %d disks:\n%s" % (counts, len(want), out))
     compare("Yade ymport.textExt", got, want)
+    packed = [tuple(float(v) for v in line.split()[1:]) for line in out.splitlines()
+              if line.startswith("FRONTPACK_SPHEREPACK ")]
+    compare("Yade SpherePack.load", packed, want)
 
 
 def main():

@@ -57,3 +57,27 @@ if(FRONTPACK_BUILD_TOOLS)
     set_tests_properties(readers.from_${program} PROPERTIES SKIP_RETURN_CODE 77 TIMEOUT 300 LABELS readers)
   endforeach()
 endif()
+
+# Simulator decks (fill --deck): the real lmp, liggghts and yade run them as written; a free disk
+# may not leave the domain, and the same deck without its walls must be seen leaking
+# (tests/readers/check_decks.py). Skip-or-fail as above.
+foreach(deck lammps:gear:uniform:0.008,0.016 lammps:plate_with_holes:uniform:0.015,0.03
+             liggghts:gear:uniform:0.008,0.016 liggghts:plate_with_holes:uniform:0.015,0.03
+             yade:gear:uniform:0.008,0.016)
+  string(REPLACE ":" ";" parts "${deck}")
+  list(GET parts 0 simulator)
+  list(GET parts 1 shape)
+  list(GET parts 2 kind)
+  list(GET parts 3 range)
+  set(name decks.${simulator}.${shape})
+  if(frontpack_reader_python)
+    add_test(NAME ${name}
+      COMMAND ${frontpack_reader_python} ${CMAKE_CURRENT_LIST_DIR}/check_decks.py ${simulator}
+              $<TARGET_FILE:frontpack_tool> ${PROJECT_SOURCE_DIR}/shapes/${shape}.wkt ${kind}:${range}
+              ${CMAKE_CURRENT_BINARY_DIR}/decks/${simulator}_${shape})
+  else()
+    add_test(NAME ${name}
+      COMMAND sh -c "echo 'python3 is not installed'; test \"$FRONTPACK_REQUIRE_READERS\" = 1 && exit 1; exit 77")
+  endif()
+  set_tests_properties(${name} PROPERTIES SKIP_RETURN_CODE 77 TIMEOUT 300 LABELS readers)
+endforeach()

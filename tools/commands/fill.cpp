@@ -5,6 +5,7 @@
 #include <charconv>
 #include <cmath>
 #include <cstdint>
+#include <filesystem>
 #include <iostream>
 #include <limits>
 #include <memory>
@@ -13,6 +14,7 @@
 #include <string>
 #include <string_view>
 #include <system_error>
+#include <utility>
 #include <vector>
 
 #include "cli.hpp"
@@ -77,6 +79,11 @@ struct FillArgs {
   bool holes = false;
   bool quiet = false;
   bool progress = false;
+  std::string types;                // --types RULE
+  std::vector<std::string> deck{};  // --deck SIMULATOR DIR
+  std::string density;              // --density SPEC
+  std::string thickness;            // --thickness T
+  std::string wall_radius;          // --wall-radius W
 };
 
 // A finite double for OPTION, read exactly as from_chars reads it (no locale). Throws OptionError.
@@ -88,6 +95,15 @@ double parse_double(const char* option, std::string_view text) {
   if (text.empty() || ec != std::errc{} || end != last || !std::isfinite(value)) {
     throw frontpack::OptionError(std::string(option) + " '" + std::string(text.substr(0, 40)) +
                                  "': expected a finite number, e.g. 0.5 or -2e-3");
+  }
+  return value;
+}
+
+// A finite number > 0 for OPTION. Throws OptionError.
+double parse_positive(const char* option, const std::string& text) {
+  const double value = parse_double(option, text);
+  if (!(value > 0)) {
+    throw frontpack::OptionError(std::string(option) + " '" + text.substr(0, 40) + "': expected a finite number > 0");
   }
   return value;
 }
@@ -123,6 +139,42 @@ void apply_front_options(const FillArgs& a, frontpack::FillOptions& options) {
     }
   }
   options.fill_voids = !a.no_voids;
+}
+
+// The deck's options, checked before any work; the directory is created if missing.
+struct DeckPlan {
+  bool wanted = false;
+  frontpack::DeckOptions options;
+  std::filesystem::path dir;
+};
+
+DeckPlan plan_deck(const FillArgs& a, std::uint32_t types) {
+  DeckPlan plan;
+  if (a.deck.empty()) {
+    for (const auto& [name, value] : {std::pair{"--density", &a.density}, std::pair{"--thickness", &a.thickness},
+                                      std::pair{"--wall-radius", &a.wall_radius}}) {
+      if (!value->empty()) {
+        throw frontpack::OptionError(std::string(name) + " sets up a simulator deck: it needs --deck SIMULATOR DIR");
+      }
+    }
+    return plan;
+  }
+  plan.wanted = true;
+  plan.options.simulator = frontpack::simulator_from_name(a.deck[0]);
+  plan.dir = a.deck[1];
+  if (a.density.empty()) {
+    throw frontpack::OptionError(
+        "--deck needs --density: one density for all types (e.g. 2500) or one per type "
+        "(1:2500,2:7800); mass per area, or per volume with --thickness");
+  }
+  plan.options.densities = frontpack::parse_densities(a.density, types);
+  plan.options.thickness = a.thickness.empty() ? 0.0 : parse_positive("--thickness", a.thickness);
+  plan.options.wall_radius = a.wall_radius.empty() ? 0.0 : parse_positive("--wall-radius", a.wall_radius);
+  if (plan.options.simulator != frontpack::Simulator::lammps && !a.wall_radius.empty()) {
+    throw frontpack::OptionError("--wall-radius sets the LAMMPS deck's wall disks; the " +
+                                 std::string(frontpack::to_string(plan.options.simulator)) + " deck has mesh walls");
+  }
+  return plan;
 }
 
 frontpack::Method parse_method(const std::string& name) {
@@ -219,9 +271,25 @@ int run_fill(const FillArgs& a) {
   options.stop = stop_token();
   apply_front_options(a, options);
   const std::vector<frontpack_tool::Output> outputs = frontpack_tool::resolve_outputs(a.outputs, a.format, false);
+  const frontpack::TypeRule type_rule = a.types.empty() ? frontpack::TypeRule{} : frontpack::parse_type_rule(a.types);
+  DeckPlan deck = plan_deck(a, type_rule.count());
+  deck.options.stop = options.stop;
   std::vector<frontpack_tool::FileUse> inputs = domain_inputs(a.src);
   add_curve_input(spec, inputs);
-  frontpack_tool::check_files(inputs, output_uses(outputs, a.json));
+  for (const std::string& region : type_rule.region_names) {
+    inputs.push_back({"--types region:FILE", region});
+  }
+  std::vector<frontpack_tool::FileUse> output_files = output_uses(outputs, a.json);
+  if (deck.wanted) {
+    if (std::filesystem::exists(deck.dir) && !std::filesystem::is_directory(deck.dir)) {
+      throw frontpack::IoError("--deck directory '" + deck.dir.string() + "' is not a directory", deck.dir.string());
+    }
+    std::filesystem::create_directories(deck.dir);
+    for (const std::string& name : frontpack::deck_file_names(deck.options.simulator)) {
+      output_files.push_back({"--deck", deck.dir / name});
+    }
+  }
+  frontpack_tool::check_files(inputs, output_files);
   const frontpack::Domain domain = load(a.src);
   if (options.start && domain.num_polygons() > 1) {
     throw frontpack::OptionError("--start: the domain has " + std::to_string(domain.num_polygons()) +
@@ -272,9 +340,20 @@ int run_fill(const FillArgs& a) {
                                               .requested = options.radii,
                                               .requested_spec = spec,
                                               .stop = options.stop};
+  const std::vector<std::uint32_t> types =
+      a.types.empty() ? std::vector<std::uint32_t>{} : frontpack::assign_types(type_rule, p.disks);
   for (const auto& o : outputs) {
     line.phase("writing " + o.path.string());
-    pending.write(o, domain, p.disks, picture, options.stop);
+    pending.write(o, domain, p.disks, picture, options.stop, types);
+  }
+  std::vector<std::string> deck_files;
+  if (deck.wanted) {
+    line.phase("writing the " + std::string(frontpack::to_string(deck.options.simulator)) + " deck in " +
+               deck.dir.string());
+    for (const frontpack::DeckFile& f : frontpack::make_deck(domain, p.disks, types, deck.options)) {
+      deck_files.push_back((deck.dir / f.name).string());
+      pending.write_text(deck.dir / f.name, f.text);
+    }
   }
   if (!a.json.empty()) {
     const Json j = fill_json(a, spec, options, domain, p, s, outputs, seconds_stats, seconds_since(t_start));
@@ -303,6 +382,9 @@ int run_fill(const FillArgs& a) {
     }
     if (!a.json.empty()) {
       std::cerr << "wrote:       " << a.json << " (summary)\n";
+    }
+    for (const std::string& f : deck_files) {
+      std::cerr << "wrote:       " << f << " (" << a.deck[0] << " deck)\n";
     }
   }
   if (p.truncated) {
@@ -339,6 +421,21 @@ Command add_fill(CLI::App& app) {
                   "format of every -o instead of the extension: csv, yade, lammps, "
                   "vtp, png, svg, pdf");
   cmd->add_option("--json", args->json, "write the summary as JSON to this file");
+  cmd->add_option("--types", args->types,
+                  "per-disk types (1-based) for every output: size:E1,E2,... (radius bin edges: r < E1 is type 1, "
+                  "E1 <= r < E2 type 2, ...) or region:A.wkt,B.wkt,... (a centre in the closed region k is type "
+                  "k+1, the first region wins; else 1)");
+  cmd->add_option("--deck", args->deck,
+                  "SIMULATOR DIR: write a deck that runs as it is into DIR (created if missing): lammps, liggghts or "
+                  "yade (docs/simulators.md)")
+      ->expected(2);
+  cmd->add_option("--density", args->density,
+                  "with --deck: density of every type (2500) or per type (1:2500,2:7800); mass per area, or per "
+                  "volume with --thickness");
+  cmd->add_option("--thickness", args->thickness,
+                  "with --deck: the disks are cylinders this thick and --density is per volume");
+  cmd->add_option("--wall-radius", args->wall_radius,
+                  "with --deck lammps: radius of the frozen wall disks (default: the smallest radius)");
   cmd->add_option("--width", args->width, "picture width in pixels")->capture_default_str();
   cmd->add_flag("--no-histogram", args->no_histogram,
                 "pictures without the size-distribution panel (histogram by area, KS distance)");

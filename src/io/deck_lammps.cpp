@@ -1,0 +1,92 @@
+// The LAMMPS deck: a data file with the packed disks and frozen wall disks, and an input script.
+#include <algorithm>
+#include <sstream>
+#include <string>
+
+#include "common/format.hpp"
+#include "frontpack/io.hpp"
+#include "frontpack/version.hpp"
+#include "io/deck_physics.hpp"
+
+namespace frontpack::detail {
+
+std::vector<DeckFile> lammps_deck(const Domain& domain, std::span<const Disk> disks,
+                                  std::span<const std::uint32_t> types, const DeckOptions& options,
+                                  const DeckPhysics& p) {
+  const double wall_radius = options.wall_radius > 0 ? options.wall_radius : p.rmin;
+  const std::vector<Disk> walls = wall_disks(domain, wall_radius, p.rmin);
+  const std::uint32_t wall_type = p.types + 1;
+
+  std::vector<Disk> all(disks.begin(), disks.end());
+  all.insert(all.end(), walls.begin(), walls.end());
+  std::vector<std::uint32_t> all_types(disks.size(), 1);
+  if (!types.empty()) {
+    std::copy(types.begin(), types.end(), all_types.begin());
+  }
+  all_types.resize(all.size(), wall_type);
+  Box box;
+  for (const Disk& d : all) {
+    box.extend(Box{d.centre.x - d.radius, d.centre.y - d.radius, d.centre.x + d.radius, d.centre.y + d.radius});
+  }
+  // Room around the walls, so that rounding in LAMMPS's box never loses a wall atom.
+  const double margin = 2 * p.rmax;
+  box = Box{box.xmin - margin, box.ymin - margin, box.xmax + margin, box.ymax + margin};
+
+  LammpsOptions data_options;
+  data_options.type_densities = p.area_density;
+  data_options.type_densities.push_back(*std::max_element(p.area_density.begin(), p.area_density.end()));
+  data_options.atom_types = wall_type;
+  std::ostringstream data;
+  write_lammps(data, all, all_types, box, data_options, options.stop);
+
+  const std::string free_types = p.types == 1 ? std::string("1") : "1.." + std::to_string(p.types);
+  const std::string w = std::to_string(wall_type);
+  const std::uint64_t every = std::max<std::uint64_t>(1, options.steps / 10);
+  std::ostringstream in;
+  in << "# LAMMPS input written by frontpack " << version_string << " (run: lmp -in in.frontpack)\n"
+     << "# " << disks.size() << " free disks of types " << free_types << ", " << walls.size()
+     << " frozen wall disks of type " << w << " (radius " << format_double(wall_radius) << ")\n"
+     << "# outside the domain along every edge and hole: each lies in the closure of the domain's complement\n"
+     << "# (certified exactly) and neighbours leave no gap a disk of radius " << format_double(p.rmin)
+     << " could pass.\n"
+     << "# Units: those of the domain and densities (SI: m, kg, s). " << mass_note(options) << ".\n"
+     << "units si\n"
+     << "dimension 2\n"
+     << "atom_style sphere\n"
+     << "boundary f f p\n"
+     << "newton off\n"
+     << "comm_modify vel yes\n"
+     << "read_data deck.data\n"
+     << "group wall type " << w << "\n"
+     << "group free subtract all wall\n";
+  for (std::uint32_t t = 1; t <= p.types; ++t) {
+    in << "set type " << t << " density/disc " << format_double(p.area_density[t - 1]) << "\n";
+  }
+  in << "# Hooke contacts. kn = F / d: F = " << format_double(p.load)
+     << " is the weight of a column as tall as the domain\n"
+     << "# and 2 rmax wide (density * g * height * 2 rmax), d = " << format_double(p.overlap)
+     << " is 1% of rmin. kt = 2/7 kn; gamman gives\n"
+     << "# restitution 0.5 for the two heaviest disks (lighter pairs are damped less); gammat = gamman / 2;\n"
+     << "# friction 0.5.\n"
+     << "pair_style gran/hooke/history " << format_double(p.kn) << " NULL " << format_double(p.gamma_n)
+     << " NULL 0.5 1\n"
+     << "pair_coeff * *\n"
+     << "neighbor " << format_double(0.5 * p.rmin) << " bin\n"
+     << "neigh_modify delay 0 every 1 check yes exclude type " << w << ' ' << w << "\n"
+     << "fix walls wall freeze\n"
+     << "fix gravity free gravity " << format_double(p.gravity) << " vector 0 -1 0\n"
+     << "fix move free nve/sphere disc\n"
+     << "fix plane all enforce2d\n"
+     << "# Timestep: the contact time pi sqrt(m_eff / kn) of the two lightest disks (m_eff = "
+     << format_double(p.mass_min / 2) << ") / 50.\n"
+     << "timestep " << format_double(p.dt_hooke) << "\n"
+     << "compute ke free ke\n"
+     << "thermo_style custom step atoms c_ke\n"
+     << "thermo " << every << "\n"
+     << "dump free free custom " << every << " dump.free id type radius mass x y vx vy fx fy\n"
+     << "dump_modify free sort id format float %.17g\n"
+     << "run " << options.steps << "\n";
+  return {{"deck.data", data.str()}, {"in.frontpack", in.str()}};
+}
+
+}  // namespace frontpack::detail

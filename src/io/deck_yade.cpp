@@ -1,0 +1,97 @@
+// The Yade deck: the packing as Yade text (with material ids for types) and a script that loads
+// it, builds the wall facets from the domain's edges, holds the spheres in the plane and runs.
+#include <sstream>
+#include <string>
+
+#include "common/format.hpp"
+#include "common/stop.hpp"
+#include "frontpack/io.hpp"
+#include "frontpack/version.hpp"
+#include "io/deck_physics.hpp"
+
+namespace frontpack::detail {
+
+std::vector<DeckFile> yade_deck(const Domain& domain, std::span<const Disk> disks, std::span<const std::uint32_t> types,
+                                const DeckOptions& options, const DeckPhysics& p) {
+  std::vector<std::uint32_t> all_types(types.begin(), types.end());
+  if (all_types.empty()) {
+    all_types.assign(disks.size(), 1);
+  }
+  std::ostringstream packing;
+  write_yade(packing, disks, all_types, options.stop);
+
+  // Yade's FrictPhys gives kn = 2 E1 r1 E2 r2 / (E1 r1 + E2 r2): E r for two equal radii r, so
+  // E = kn / rmin gives the two smallest disks the stiffness of the LAMMPS deck.
+  const double young = p.kn / p.rmin;
+  std::ostringstream py;
+  py << "# Yade script written by frontpack " << version_string
+     << " (run: yade -n -x run.py [STEPS], in this directory)\n"
+     << "# Loads packing.txt (one material per type, O.materials[type - 1]), builds the walls as facets from\n"
+     << "# the domain's edges (vertical quads), holds the spheres in the plane z = 0, applies gravity along -y.\n"
+     << "# Units: those of the domain and densities (SI: m, kg, s). " << mass_note(options) << ";\n"
+     << "# the masses and the (disc) inertia are set per body, since Yade's materials are 3D.\n"
+     << "# Contacts: FrictMat, E = kn / rmin = " << format_double(young) << " (kn = " << format_double(p.kn)
+     << ", as the LAMMPS deck:\n"
+     << "# the weight of a column as tall as the domain presses two smallest disks 1% of rmin deep), friction 0.5,\n"
+     << "# non-viscous damping 0.3. Timestep: the contact time of the two lightest disks / 50.\n"
+     << "import math\nimport sys\n\nfrom yade import O, utils, ymport\n"
+     << "from yade.wrapper import *\n\n"
+     << "STEPS = int(sys.argv[1]) if len(sys.argv) > 1 else " << options.steps << "\n"
+     << "DENSITY = [";
+  for (std::uint32_t t = 0; t < p.types; ++t) {
+    py << (t == 0 ? "" : ", ") << format_double(p.area_density[t]);
+  }
+  py << "]  # mass per area, by type\n"
+     << "HALF_HEIGHT = " << format_double(2 * p.rmax) << "  # the facets' extent in z\n"
+     << "RINGS = [\n";
+  for (const Polygon& poly : domain.polygons()) {
+    for (std::size_t r = 0; r <= poly.holes.size(); ++r) {
+      const Ring& ring = r == 0 ? poly.outer : poly.holes[r - 1];
+      py << "    [";
+      for (std::size_t i = 0; i < ring.size(); ++i) {
+        throw_if_stopped(options.stop, i);
+        py << (i == 0 ? "" : ", ") << '(' << format_double(ring[i].x) << ", " << format_double(ring[i].y) << ')';
+      }
+      py << "],\n";
+    }
+  }
+  py << "]\n\n"
+     << "for rho in DENSITY:\n"
+     << "    O.materials.append(FrictMat(young=" << format_double(young)
+     << ", poisson=0.3, frictionAngle=math.atan(0.5), density=rho))\n"
+     << "wall_material = O.materials.append(FrictMat(young=" << format_double(young)
+     << ", poisson=0.3, frictionAngle=math.atan(0.5), density=1))\n"
+     << "spheres = ymport.textExt('packing.txt')\n"
+     << "for s in spheres:\n"
+     << "    r = s.shape.radius\n"
+     << "    s.state.mass = DENSITY[s.material.id] * math.pi * r * r\n"
+     << "    i = 0.5 * s.state.mass * r * r\n"
+     << "    s.state.inertia = (i, i, i)\n"
+     << "    s.state.blockedDOFs = 'zXY'\n"
+     << "O.bodies.append(spheres)\n"
+     << "for ring in RINGS:\n"
+     << "    for k in range(len(ring)):\n"
+     << "        (ax, ay), (bx, by) = ring[k], ring[(k + 1) % len(ring)]\n"
+     << "        a0, b0 = (ax, ay, -HALF_HEIGHT), (bx, by, -HALF_HEIGHT)\n"
+     << "        a1, b1 = (ax, ay, HALF_HEIGHT), (bx, by, HALF_HEIGHT)\n"
+     << "        O.bodies.append(utils.facet([a0, b0, b1], fixed=True, material=wall_material))\n"
+     << "        O.bodies.append(utils.facet([a0, b1, a1], fixed=True, material=wall_material))\n\n"
+     << "O.engines = [\n"
+     << "    ForceResetter(),\n"
+     << "    InsertionSortCollider([Bo1_Sphere_Aabb(), Bo1_Facet_Aabb()]),\n"
+     << "    InteractionLoop([Ig2_Sphere_Sphere_ScGeom(), Ig2_Facet_Sphere_ScGeom()],\n"
+     << "                    [Ip2_FrictMat_FrictMat_FrictPhys()],\n"
+     << "                    [Law2_ScGeom_FrictPhys_CundallStrack()]),\n"
+     << "    NewtonIntegrator(damping=0.3, gravity=(0, " << format_double(-p.gravity) << ", 0)),\n"
+     << "]\n"
+     << "O.dt = " << format_double(p.dt_hooke) << "\n"
+     << "O.run(STEPS, True)\n"
+     << "with open('final.txt', 'w') as f:\n"
+     << "    for b in O.bodies:\n"
+     << "        if isinstance(b.shape, Sphere):\n"
+     << "            f.write('%r %r %r %d\\n' % (b.state.pos[0], b.state.pos[1], b.shape.radius, b.material.id + 1))\n"
+     << "print('FRONTPACK_DONE %d steps, %d spheres' % (O.iter, len(spheres)))\n";
+  return {{"packing.txt", packing.str()}, {"run.py", py.str()}};
+}
+
+}  // namespace frontpack::detail

@@ -1,0 +1,122 @@
+// Types (size classes, regions), typed files read back, and the LAMMPS deck's wall disks:
+// outside the domain (exactly), closing every ring, never touching a packed disk.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "frontpack/frontpack.hpp"
+
+namespace fp = frontpack;
+
+namespace {
+
+fp::Domain shape(const std::string& name) {
+  return fp::Domain::from_wkt_file(std::string(FRONTPACK_SHAPES_DIR) + "/" + name + ".wkt");
+}
+
+fp::Packing fill(const fp::Domain& d, double rmin, double rmax) {
+  fp::FillOptions o;
+  o.radii = fp::Radii::uniform(rmin, rmax);
+  o.seed = 5;
+  return fp::fill(d, o);
+}
+
+}  // namespace
+
+TEST(Types, SizeClassesByBinEdges) {
+  const fp::TypeRule rule = fp::parse_type_rule("size:1,2");
+  EXPECT_EQ(rule.count(), 3U);
+  const std::vector<fp::Disk> disks = {{{0, 0}, 0.5}, {{0, 0}, 1}, {{0, 0}, 1.5}, {{0, 0}, 2}, {{0, 0}, 7}};
+  EXPECT_EQ(fp::assign_types(rule, disks), (std::vector<std::uint32_t>{1, 2, 2, 3, 3}));
+}
+
+TEST(Types, RegionsByClosedRegionFirstWins) {
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "frontpack_types_test";
+  std::filesystem::create_directories(dir);
+  std::ofstream(dir / "a.wkt") << "POLYGON((0 0,1 0,1 1,0 1,0 0))";
+  std::ofstream(dir / "b.wkt") << "POLYGON((0.5 0,2 0,2 1,0.5 1,0.5 0))";
+  const fp::TypeRule rule = fp::parse_type_rule("region:" + (dir / "a.wkt").string() + "," + (dir / "b.wkt").string());
+  EXPECT_EQ(rule.count(), 3U);
+  // On a's boundary (x = 1) is in a; in both, a wins; only in b; in neither.
+  const std::vector<fp::Disk> disks = {{{1, 0.5}, 0.1}, {{0.7, 0.5}, 0.1}, {{1.5, 0.5}, 0.1}, {{3, 0.5}, 0.1}};
+  EXPECT_EQ(fp::assign_types(rule, disks), (std::vector<std::uint32_t>{2, 2, 3, 1}));
+  std::filesystem::remove_all(dir);
+}
+
+TEST(Types, BadRulesAreOptionErrors) {
+  for (const char* spec : {"size:", "size:2,1", "size:1,1", "size:0", "size:x", "size:1,,2", "bins:1", "size"}) {
+    EXPECT_THROW((void)fp::parse_type_rule(spec), fp::OptionError) << spec;
+  }
+  EXPECT_THROW((void)fp::parse_type_rule("region:/nonexistent/a.wkt"), fp::IoError);
+  EXPECT_THROW((void)fp::parse_densities("1:2500", 2), fp::OptionError);
+  EXPECT_THROW((void)fp::parse_densities("1:2500,1:3", 1), fp::OptionError);
+  EXPECT_THROW((void)fp::parse_densities("3:1", 2), fp::OptionError);
+  EXPECT_THROW((void)fp::parse_densities("-1", 2), fp::OptionError);
+  EXPECT_EQ(fp::parse_densities("2:7800,1:2500", 2), (std::vector<double>{2500, 7800}));
+}
+
+TEST(Types, TypedCsvAndYadeReadBack) {
+  const fp::Domain d = shape("l_shape");
+  const fp::Packing p = fill(d, 0.02, 0.05);
+  const std::vector<std::uint32_t> types = fp::assign_types(fp::size_types({0.035}), p.disks);
+  std::ostringstream csv;
+  std::ostringstream yade;
+  fp::write_csv(csv, p.disks, types);
+  fp::write_yade(yade, p.disks, types);
+  EXPECT_EQ(csv.str().substr(0, 11), "x,y,r,type\n");
+  EXPECT_EQ(yade.str().substr(0, 22), "#format x_y_z_r_matId\n");
+  for (const std::string& text : {csv.str(), yade.str()}) {
+    std::istringstream in(text);
+    std::vector<std::uint32_t> got;
+    const std::vector<fp::Disk> disks = text[0] == 'x' ? fp::read_csv(in, "t", got) : fp::read_yade(in, "t", got);
+    EXPECT_EQ(disks, p.disks);
+    EXPECT_EQ(got, types);
+  }
+  // Untyped Yade text has no header line: SpherePack.load refuses any '#' line.
+  std::ostringstream plain;
+  fp::write_yade(plain, p.disks);
+  EXPECT_NE(plain.str()[0], '#');
+  std::ostringstream vtp;
+  fp::write_vtp(vtp, p.disks, types);
+  EXPECT_NE(vtp.str().find("<DataArray type=\"Int32\" Name=\"type\""), std::string::npos);
+  EXPECT_THROW(fp::write_csv(csv, p.disks, std::vector<std::uint32_t>(3, 1)), fp::OptionError);
+}
+
+// The wall disks lie outside the domain (their centres farther than their radius from every
+// packed disk's contact, checked here against the packing in floating point with the 1e-6 gap),
+// and consecutive chain disks leave no gap of 2 rmin.
+TEST(Walls, OutsideClosedAndClearOfThePacking) {
+  for (const char* name : {"gear", "plate_with_holes", "annulus", "comb", "islands"}) {
+    const fp::Domain d = shape(name);
+    const double rmin = 0.01 * std::max(d.bbox().width(), d.bbox().height());
+    const fp::Packing p = fill(d, rmin, 2 * rmin);
+    const std::vector<fp::Disk> walls = fp::wall_disks(d, rmin, rmin);
+    ASSERT_FALSE(walls.empty()) << name;
+    for (const fp::Disk& w : walls) {
+      ASSERT_EQ(d.locate(w.centre), fp::Location::outside) << name;
+      ASSERT_FALSE(d.contains(fp::Disk{w.centre, 0})) << name;
+    }
+    std::size_t touching = 0;
+    for (const fp::Disk& w : walls) {
+      for (const fp::Disk& f : p.disks) {
+        const double gap = std::hypot(w.centre.x - f.centre.x, w.centre.y - f.centre.y) - (w.radius + f.radius);
+        ASSERT_GT(gap, 0) << name << ": wall disk overlaps a packed disk";
+        touching += gap < 1e-3 * rmin ? 1 : 0;
+      }
+    }
+    EXPECT_GT(touching, 0U) << name << ": the walls should touch the packing's outer layer";
+  }
+}
+
+TEST(Walls, TooLargeForASmallHoleIsRefused) {
+  // A hole 0.01 wide: no wall disk of radius 0.1 fits in it, so it cannot be walled.
+  const fp::Domain d =
+      fp::Domain::from_wkt("POLYGON((0 0,1 0,1 1,0 1,0 0),(0.5 0.5,0.5 0.51,0.51 0.51,0.51 0.5,0.5 0.5))");
+  EXPECT_THROW((void)fp::wall_disks(d, 0.1, 0.01), fp::OptionError);
+  EXPECT_NO_THROW((void)fp::wall_disks(d, 0.004, 0.01));
+}
