@@ -46,6 +46,25 @@ template <class Blank>
   }
 }
 
+/// The fields of `line` separated by runs of spaces and tabs (views into `line`; none empty).
+[[nodiscard]] inline std::vector<std::string_view> tokens(std::string_view line) {
+  std::vector<std::string_view> out;
+  std::size_t i = 0;
+  while (i < line.size()) {
+    while (i < line.size() && is_space_or_tab(line[i])) {
+      ++i;
+    }
+    const std::size_t start = i;
+    while (i < line.size() && !is_space_or_tab(line[i])) {
+      ++i;
+    }
+    if (i > start) {
+      out.push_back(line.substr(start, i - start));
+    }
+  }
+  return out;
+}
+
 /// `s` with A-Z turned into a-z (other bytes as they are).
 [[nodiscard]] inline std::string ascii_lower(std::string_view s) {
   std::string out(s);

@@ -81,24 +81,6 @@ std::uint64_t LineReader::count_at(std::string_view field, const char* what, std
   return value;
 }
 
-std::vector<std::string_view> tokens(std::string_view line) {
-  std::vector<std::string_view> out;
-  std::size_t i = 0;
-  while (i < line.size()) {
-    while (i < line.size() && is_space_or_tab(line[i])) {
-      ++i;
-    }
-    const std::size_t start = i;
-    while (i < line.size() && !is_space_or_tab(line[i])) {
-      ++i;
-    }
-    if (i > start) {
-      out.push_back(line.substr(start, i - start));
-    }
-  }
-  return out;
-}
-
 std::string_view strip_comment(std::string_view line) {
   return trim(line.substr(0, line.find('#')), is_space_or_tab);
 }

@@ -9,6 +9,7 @@
 #include <string_view>
 #include <vector>
 
+#include "common/text.hpp"  // tokens()
 #include "frontpack/errors.hpp"
 #include "frontpack/geometry.hpp"
 
@@ -45,9 +46,6 @@ class LineReader {
   std::string line_;
   std::size_t number_ = 0;
 };
-
-/// The fields of `line` separated by runs of spaces and tabs (views into `line`).
-[[nodiscard]] std::vector<std::string_view> tokens(std::string_view line);
 
 /// `line` without a '#' comment (LAMMPS: everything from the first '#'), trimmed of spaces and tabs.
 [[nodiscard]] std::string_view strip_comment(std::string_view line);

@@ -114,24 +114,7 @@ std::vector<std::string_view> split(std::string_view line, char separator) {
   return fields;
 }
 
-// Fields of a line separated by runs of spaces and tabs.
-std::vector<std::string_view> tokens(std::string_view line) {
-  std::vector<std::string_view> out;
-  std::size_t i = 0;
-  while (i < line.size()) {
-    while (i < line.size() && is_blank(line[i])) {
-      ++i;
-    }
-    const std::size_t start = i;
-    while (i < line.size() && !is_blank(line[i])) {
-      ++i;
-    }
-    if (i > start) {
-      out.push_back(line.substr(start, i - start));
-    }
-  }
-  return out;
-}
+using detail::tokens;
 
 // A type: a whole number >= 1 (CSV) or a Yade matId >= 0 (then type = matId + 1), digits only.
 std::uint32_t parse_type(const Lines& lines, std::string_view field, std::uint32_t base, const char* what) {

@@ -25,40 +25,18 @@ not installed (a skip), unless FRONTPACK_REQUIRE_READERS=1.
 import math
 import os
 import shutil
-import subprocess
 import sys
 
-SKIP = 77
-
-
-def fail(message):
-    print("FAIL: " + message, file=sys.stderr)
-    sys.exit(1)
-
-
-def missing(what):
-    if os.environ.get("FRONTPACK_REQUIRE_READERS") == "1":
-        fail(what + " is not installed, and FRONTPACK_REQUIRE_READERS=1")
-    print("SKIP: " + what + " is not installed")
-    sys.exit(SKIP)
-
-
-def run(command, cwd):
-    result = subprocess.run(command, cwd=cwd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
-    if result.returncode != 0:
-        fail("%s exited with %d:\n%s" % (" ".join(command), result.returncode, result.stdout[-4000:]))
-    return result.stdout
+from reader_support import fail, missing, run
+from reader_support import read_csv as read_any_csv
 
 
 def read_csv(path):
-    with open(path, encoding="ascii") as f:
-        lines = f.read().splitlines()
-    if lines[0] != "x,y,r,type":
-        fail(path + ": header %r, expected x,y,r,type" % lines[0])
-    disks = [tuple(float(v) for v in line.split(",")[:3]) + (int(line.split(",")[3]),) for line in lines[1:]]
-    if len(disks) < 1000:
-        fail("only %d disks; the test wants a real packing" % len(disks))
-    return disks
+    return read_any_csv(path, header="x,y,r,type", at_least=1000)
+
+
+
+
 
 
 def read_dump(path):
@@ -78,7 +56,6 @@ def read_dump(path):
 
 def outside(domain, disks, tolerance):
     """The disks (x, y, r) not inside: centre outside, or nearer the boundary than r - tolerance."""
-    import shapely
     from shapely.geometry import Point
 
     bad = []

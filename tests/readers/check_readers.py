@@ -21,43 +21,17 @@ the environment has FRONTPACK_REQUIRE_READERS=1, where a missing reader is a fai
 """
 import os
 import shutil
-import subprocess
 import sys
 
-SKIP = 77
-
-
-def fail(message):
-    print("FAIL: " + message, file=sys.stderr)
-    sys.exit(1)
-
-
-def missing(what):
-    if os.environ.get("FRONTPACK_REQUIRE_READERS") == "1":
-        fail(what + " is not installed, and FRONTPACK_REQUIRE_READERS=1 (tools/dev.sh test installs it)")
-    print("SKIP: " + what + " is not installed (set FRONTPACK_REQUIRE_READERS=1 to make this a failure)")
-    sys.exit(SKIP)
+from reader_support import fail, missing, read_csv, run
 
 
 def read_reference(path):
-    with open(path, encoding="ascii") as f:
-        lines = f.read().splitlines()
-    if not lines or lines[0] != "x,y,r":
-        fail(path + ": no x,y,r header")
-    disks = []
-    for line in lines[1:]:
-        x, y, r = line.split(",")
-        disks.append((float(x), float(y), float(r)))
-    if len(disks) < 100:
-        fail(path + ": only %d disks; the test wants a real packing" % len(disks))
-    return disks
+    return read_csv(path, at_least=100)
 
 
-def run(command, cwd):
-    result = subprocess.run(command, cwd=cwd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
-    if result.returncode != 0:
-        fail("%s exited with %d:\n%s" % (" ".join(command), result.returncode, result.stdout))
-    return result.stdout
+
+
 
 
 def compare(program, got, want):

@@ -23,37 +23,13 @@ FRONTPACK_REQUIRE_READERS=1, where a missing program is a failure.
 import os
 import re
 import shutil
-import subprocess
 import sys
 
-SKIP = 77
+from reader_support import fail, missing, read_csv, run
 
 
-def fail(message):
-    print("FAIL: " + message, file=sys.stderr)
-    sys.exit(1)
 
 
-def missing(what):
-    if os.environ.get("FRONTPACK_REQUIRE_READERS") == "1":
-        fail(what + " is not installed, and FRONTPACK_REQUIRE_READERS=1 (tools/dev.sh test installs it)")
-    print("SKIP: " + what + " is not installed (set FRONTPACK_REQUIRE_READERS=1 to make this a failure)")
-    sys.exit(SKIP)
-
-
-def read_csv(path):
-    with open(path, encoding="ascii") as f:
-        lines = f.read().splitlines()
-    if not lines or lines[0] != "x,y,r":
-        fail(path + ": no x,y,r header")
-    return [tuple(float(v) for v in line.split(",")) for line in lines[1:]]
-
-
-def run(command, cwd, expect=0):
-    result = subprocess.run(command, cwd=cwd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
-    if result.returncode != expect:
-        fail("%s exited with %d, expected %d:\n%s" % (" ".join(command), result.returncode, expect, result.stdout))
-    return result.stdout
 
 
 def same_as_reference(to_csv, work, name, want):
