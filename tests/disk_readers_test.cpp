@@ -21,16 +21,11 @@ using Kind = fp::DiskFileError::Kind;
 
 namespace {
 
-bool same_bits(const std::vector<fp::Disk>& a, const std::vector<fp::Disk>& b) {
-  return a.size() == b.size() && (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(fp::Disk)) == 0);
+std::vector<fp::Disk> real_packing(const fp::Domain& domain) {
+  return fp::test::real_packing(domain, 5);
 }
 
-std::vector<fp::Disk> real_packing(const fp::Domain& domain) {
-  fp::FillOptions options;
-  options.radii = fp::Radii::uniform(0.01, 0.05);
-  options.seed = 5;
-  return fp::fill(domain, options).disks;
-}
+using fp::test::same_bits;
 
 // Values that need all 17 digits, a subnormal radius, negative zero.
 std::vector<fp::Disk> awkward_disks() {

@@ -33,17 +33,11 @@ using fp::test::slurp;
 
 namespace {
 
-// Bit-for-bit equality (distinguishes -0.0 from 0.0, unlike ==).
-bool same_bits(const std::vector<fp::Disk>& a, const std::vector<fp::Disk>& b) {
-  return a.size() == b.size() && (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(fp::Disk)) == 0);
+std::vector<fp::Disk> real_packing(const fp::Domain& domain) {
+  return fp::test::real_packing(domain, 7);
 }
 
-std::vector<fp::Disk> real_packing(const fp::Domain& domain) {
-  fp::FillOptions options;
-  options.radii = fp::Radii::uniform(0.01, 0.05);
-  options.seed = 7;
-  return fp::fill(domain, options).disks;
-}
+using fp::test::same_bits;
 
 fp::Domain l_shape() {
   return fp::Domain::from_wkt_file(fp::test::shapes_dir() / "l_shape.wkt");

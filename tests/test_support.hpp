@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -129,5 +130,18 @@ struct ShapeTestName {
     return name.substr(0, name.find('.'));
   }
 };
+
+// Bit-for-bit equality of two disk lists (tells -0.0 from 0.0, unlike ==).
+inline bool same_bits(const std::vector<Disk>& a, const std::vector<Disk>& b) {
+  return a.size() == b.size() && (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(Disk)) == 0);
+}
+
+// A packing of `domain` from the default method, radii uniform in [0.01, 0.05].
+inline std::vector<Disk> real_packing(const Domain& domain, std::uint64_t seed) {
+  FillOptions options;
+  options.radii = Radii::uniform(0.01, 0.05);
+  options.seed = seed;
+  return frontpack::fill(domain, options).disks;
+}
 
 }  // namespace frontpack::test

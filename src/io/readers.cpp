@@ -16,6 +16,7 @@
 #include "common/read_file.hpp"
 #include "common/text.hpp"
 #include "frontpack/io.hpp"
+#include "io/line_reader.hpp"
 
 namespace frontpack {
 
@@ -35,70 +36,10 @@ std::string quote(std::string_view s) {
   return detail::quote_text(s);
 }
 
-// Reads lines, counting them, without their "\n" or "\r\n" and without a UTF-8 byte order mark at
-// the start of the file.
-class Lines {
- public:
-  Lines(std::istream& in, std::string_view source) : in_(in), source_(source.empty() ? "<input>" : source) {}
-
-  bool next() {
-    if (!std::getline(in_, line_)) {
-      if (in_.bad()) {
-        throw IoError("cannot read '" + source_ + "'", source_);
-      }
-      return false;
-    }
-    ++number_;
-    if (!line_.empty() && line_.back() == '\r') {
-      line_.pop_back();
-    }
-    if (number_ == 1 && line_.starts_with("\xEF\xBB\xBF")) {
-      line_.erase(0, 3);
-    }
-    return true;
-  }
-  [[nodiscard]] std::string_view text() const { return line_; }
-  [[nodiscard]] std::size_t number() const { return number_; }
-  [[nodiscard]] const std::string& source() const { return source_; }
-
-  [[noreturn]] void fail(Kind kind, std::string detail, std::size_t column = 0) const {
-    throw DiskFileError(kind, std::move(detail), source_, number_ == 0 ? 1 : number_, column);
-  }
-  // Column (1-based) of a field that is a view into the current line.
-  [[nodiscard]] std::size_t column_of(std::string_view field) const {
-    return static_cast<std::size_t>(field.data() - line_.data()) + 1;
-  }
-
- private:
-  std::istream& in_;
-  std::string source_;
-  std::string line_;
-  std::size_t number_ = 0;
-};
-
-// One number: the whole field, exactly as std::from_chars reads it, finite; out of the range of
-// doubles (overflowing, or underflowing to 0) it is refused, as by every reader (common/numbers.hpp).
-double parse_number(const Lines& lines, std::string_view field, const char* what) {
-  const std::size_t column = lines.column_of(field);
-  if (field.empty()) {
-    lines.fail(Kind::bad_number, std::string("expected a number for ") + what + ", got nothing", column);
-  }
-  const detail::Decimal d = detail::parse_decimal(field);
-  const double value = d.value;
-  if (d.status == detail::DecimalStatus::overflow || d.status == detail::DecimalStatus::underflow) {
-    lines.fail(Kind::bad_number, std::string(what) + " " + detail::out_of_range(field, d.status), column);
-  }
-  if (d.status != detail::DecimalStatus::ok) {
-    lines.fail(Kind::bad_number, std::string(what) + " " + quote(field) + " is not a number", column);
-  }
-  if (!std::isfinite(value)) {
-    lines.fail(Kind::non_finite, std::string(what) + " " + quote(field) + " is not finite", column);
-  }
-  return value;
-}
+using Lines = detail::LineReader;
 
 Disk make_disk(const Lines& lines, std::string_view x, std::string_view y, std::string_view r) {
-  Disk d{{parse_number(lines, x, "x"), parse_number(lines, y, "y")}, parse_number(lines, r, "radius")};
+  Disk d{{lines.number_at(x, "x"), lines.number_at(y, "y")}, lines.number_at(r, "radius")};
   if (!(d.radius > 0)) {
     lines.fail(Kind::bad_radius, "radius must be > 0, got " + quote(r), lines.column_of(r));
   }
@@ -204,7 +145,7 @@ std::vector<Disk> read_yade(std::istream& in, std::string_view source_name, std:
                  std::string(typed ? "expected 5 numbers 'x y z r matId'" : "expected 4 numbers 'x y z r'") +
                      " separated by spaces, got " + quote(lines.text()));
     }
-    if (parse_number(lines, t[2], "z") != 0) {
+    if (lines.number_at(t[2], "z") != 0) {
       lines.fail(Kind::nonzero_z, "z must be 0 (frontpack's disks are planar), got " + quote(t[2]),
                  lines.column_of(t[2]));
     }
