@@ -4,6 +4,7 @@
 
 #include "frontpack/certify.hpp"
 #include "frontpack/domain.hpp"
+#include "frontpack/domain_file.hpp"
 #include "frontpack/errors.hpp"
 #include "frontpack/fill.hpp"
 #include "frontpack/geometry.hpp"

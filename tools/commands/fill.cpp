@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "cli.hpp"
+#include "domain_files.hpp"
 #include "frontpack/frontpack.hpp"
 #include "outputs.hpp"
 #include "render.hpp"
@@ -160,7 +161,9 @@ int run_fill(const FillArgs& a) {
   std::vector<frontpack_tool::FileUse> inputs = domain_inputs(a.src);
   add_curve_input(spec, inputs);
   frontpack_tool::check_files(inputs, output_uses(outputs, a.json));
-  const frontpack::Domain domain = load(a.src);
+  // Curves become polylines within a tenth of the smallest radius of the domain's true boundary.
+  const frontpack::DomainFile file = load_file(a.src, options.radii.min() / 10);
+  const frontpack::Domain& domain = file.domain;
 
   frontpack::Packing p;
   {
@@ -222,7 +225,8 @@ int run_fill(const FillArgs& a) {
               << " dropped (overlap); every decision exact\n"
               << "time:        " << fmt(seconds_fill) << " s (front " << fmt(p.stats.seconds_front) << ", cull "
               << fmt(p.stats.seconds_cull) << ", overlap pass " << fmt(p.stats.seconds_overlap) << "), statistics "
-              << fmt(seconds_stats) << " s\n";
+              << fmt(seconds_stats) << " s\n"
+              << curve_lines(file, 10);
     for (const auto& o : outputs) {
       std::cerr << "wrote:       " << o.path.string() << " (" << frontpack_tool::format_name(o.format) << ")\n";
     }
