@@ -61,4 +61,19 @@ std::string curve_lines(const frontpack::DomainFile& file, std::size_t max_lines
   return out.str();
 }
 
+Json curves_json(const frontpack::DomainFile& file) {
+  Json out = Json::array();
+  for (const auto& c : file.curves) {
+    out.push_back(Json{{"entity", c.entity},
+                       {"centre", Json::array({c.centre.x, c.centre.y})},
+                       {"radius", c.radius},
+                       {"sweep_degrees", c.sweep * 180 / std::numbers::pi},
+                       {"domain_inside", c.domain_inside},
+                       {"deviation", c.deviation},
+                       {"segments", c.segments},
+                       {"nudged", c.nudged}});
+  }
+  return out;
+}
+
 }  // namespace frontpack_tool

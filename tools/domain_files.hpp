@@ -5,6 +5,7 @@
 #include <string>
 
 #include "frontpack/frontpack.hpp"
+#include "report.hpp"
 
 namespace frontpack_tool {
 
@@ -16,5 +17,9 @@ namespace frontpack_tool {
 /// "curves:" summary lines, one per curve (the first `max_lines`, then a count), or "" when the
 /// file has none.
 [[nodiscard]] std::string curve_lines(const frontpack::DomainFile& file, std::size_t max_lines);
+
+/// The curves as JSON: one object per arc (entity, centre, radius, sweep_degrees, domain_inside,
+/// deviation, segments, nudged).
+[[nodiscard]] Json curves_json(const frontpack::DomainFile& file);
 
 }  // namespace frontpack_tool

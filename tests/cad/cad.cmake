@@ -17,6 +17,10 @@ if(FRONTPACK_WITH_DXFLIB)
   frontpack_tool_test(cad_empty 3 "empty.dxf: no closed contour" info ${C}/empty.dxf)
   frontpack_tool_test(cad_bad_deviation 5 "--max-deviation -1: expected a finite number >= 0" info ${C}/drum.dxf --max-deviation -1)
   frontpack_tool_test(cad_tiny_deviation 5 "curve deviation 1e-15 is too small for CIRCLE" info ${C}/drum.dxf --max-deviation 1e-15)
+  set(O ${TOOL_OUT}/cad_fill_json)
+  frontpack_tool_check(cad_fill_json 0 "" FILE_MATCHES ${O}/drum.json
+    "\"curves\": \\[.*\"entity\": \"CIRCLE \\(handle 2F, line 2026\\)\".*\"domain_inside\": true.*\"segments\": 71"
+    ARGS fill ${C}/drum.dxf --radius uniform:0.01,0.03 --seed 2 -q --json ${O}/drum.json)
   # Every disk of a fill inside the TRUE circles, checked exactly against the DXF's circles.
   if(frontpack_reader_python)
     add_test(NAME tool.cad_fill_in_true_circles
@@ -27,6 +31,12 @@ if(FRONTPACK_WITH_DXFLIB)
       COMMAND ${frontpack_reader_python} ${CMAKE_CURRENT_SOURCE_DIR}/cad/fill_in_true_circles.py
               $<TARGET_FILE:frontpack_tool> ${C}/many_pipes.dxf ${CMAKE_CURRENT_BINARY_DIR}/cad_fill_pipes
               --radius uniform:0.2,0.5 --seed 5 --method closed)
+    # The check itself: a polygon made the unsafe way lets disks out of the true circles.
+    add_test(NAME tool.cad_fill_in_true_circles_catches_unsafe
+      COMMAND ${frontpack_reader_python} ${CMAKE_CURRENT_SOURCE_DIR}/cad/fill_in_true_circles.py
+              $<TARGET_FILE:frontpack_tool> ${C}/drum.dxf ${CMAKE_CURRENT_BINARY_DIR}/cad_fill_naive --naive
+              --radius uniform:0.01,0.03 --seed 5)
+    set_tests_properties(tool.cad_fill_in_true_circles_catches_unsafe PROPERTIES WILL_FAIL TRUE TIMEOUT 300)
     set_tests_properties(tool.cad_fill_in_true_circles tool.cad_fill_in_true_circles_pipes
                          PROPERTIES SKIP_RETURN_CODE 77 TIMEOUT 300)
   endif()

@@ -207,7 +207,10 @@ int run_fill(const FillArgs& a) {
     pending.write(o, domain, p.disks, picture, options.stop);
   }
   if (!a.json.empty()) {
-    const Json j = fill_json(a, spec, options, domain, p, s, outputs, seconds_stats, seconds_since(t_start));
+    Json j = fill_json(a, spec, options, domain, p, s, outputs, seconds_stats, seconds_since(t_start));
+    if (!file.curves.empty()) {
+      j["domain"]["curves"] = curves_json(file);
+    }
     pending.write_text(a.json, j.dump(2) + "\n");
   }
   pending.commit_all(options.stop);
