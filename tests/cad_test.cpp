@@ -134,6 +134,30 @@ TEST_F(DxfTest, BulgesGiveConvexEndConcaveNotchAndHole) {
   expect_area(f, 2 + pi / 8 - pi / 32 - pi / 25, pi * (0.5 + 0.25 + 0.4));
   const auto& poly = f.domain.polygons()[0];
   EXPECT_TRUE(edges_off_disk(poly.holes[0], f.curves[2].centre, f.curves[2].radius));
+  EXPECT_TRUE(edges_off_disk(poly.outer, f.curves[0].centre, f.curves[0].radius));  // the notch
+}
+
+TEST_F(DxfTest, NearlyFlatArcKeepsItsTangentVertexAccurate) {
+  const DomainFile f = read_domain_file(kDir + "flat_bulge.dxf");
+  ASSERT_EQ(f.curves.size(), 1u);
+  const auto& c = f.curves[0];
+  EXPECT_FALSE(c.domain_inside);
+  EXPECT_GT(c.radius, 2e5);
+  EXPECT_EQ(c.segments, 2u);  // one step: start tangent, end tangent
+  const auto& ring = f.domain.polygons()[0].outer;
+  ASSERT_EQ(ring.size(), 5u);
+  // The tangent vertex is above the chord's midpoint by (L/2) tan(sweep/4 * 2) ~ the sagitta.
+  bool found = false;
+  for (const auto& p : ring) {
+    if (std::abs(p.x - (1e4 + 0.5)) < 1e-9) {
+      found = true;
+      EXPECT_NEAR(p.y, 1e4 + 1 - 1e-6, 1e-9);
+      // Exactly outside the open disk: no nearer the centre than the radius.
+      EXPECT_GE(CGAL::squared_distance(K::Point_2(p.x, p.y), K::Point_2(c.centre.x, c.centre.y)), sq(c.radius));
+    }
+  }
+  EXPECT_TRUE(found);
+  expect_area(f, 1 - 2.0 / 3 * 1.0 * 5e-7, 1.0);
 }
 
 TEST_F(DxfTest, LinesAndArcsJoinIntoAStadium) {

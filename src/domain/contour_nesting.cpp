@@ -53,7 +53,7 @@ Built build_ring(const Contour& c, const DomainReadOptions& options, Side inside
   const auto report = [&](const std::string& entity, const Arc& arc, bool inside, const ArcPolyline& p) {
     out.curves.push_back({.entity = entity,
                           .centre = arc.centre,
-                          .radius = arc.radius,
+                          .radius = p.radius,
                           .sweep = std::abs(arc.sweep),
                           .domain_inside = inside,
                           .deviation = p.deviation,

@@ -20,9 +20,10 @@ namespace {
 using Exact = CGAL::Mpzf;  // exact sums and products of doubles (no division needed below)
 
 constexpr double kMaxStep = std::numbers::pi / 2;
-// Each nudge moves a coordinate by one ulp; a vertex rounded to the wrong side is off by about one
-// ulp of its coordinates, so a few steps suffice. The bound only guards the loop.
-constexpr int kMaxNudges = 4096;
+// A rounded vertex is off its side by about an ulp of the circle's centre and radius, which may be
+// many ulps of the vertex itself (a nearly flat arc far from its centre): the n-th move of a
+// vertex is 2^n ulps, so any offset is made good in a few dozen moves. The bound guards the loop.
+constexpr int kMaxNudges = 200;
 
 Exact squared_distance(Point p, Point c) {
   const Exact dx = Exact(p.x) - Exact(c.x);
@@ -52,22 +53,33 @@ bool segment_keeps_off(Point a, Point b, Point c, const Exact& bound2) {
   return cross * cross >= bound2 * ab2;  // distance to the line, squared, times |ab|^2
 }
 
-double step_toward(double x, double target) {
-  return x == target ? x : std::nextafter(x, target);
+// x moved by 2^k ulps toward +inf (dir > 0) or -inf (dir < 0).
+double moved(double x, double dir, int k) {
+  const double ulp = std::nextafter(std::abs(x), std::numeric_limits<double>::infinity()) - std::abs(x);
+  return x + std::copysign(std::ldexp(ulp, k), dir);
 }
 
-Point toward_centre(Point p, Point c) {
-  return {step_toward(p.x, c.x), step_toward(p.y, c.y)};
+Point toward_centre(Point p, Point c, int k) {
+  return {p.x == c.x ? p.x : moved(p.x, c.x - p.x, k), p.y == c.y ? p.y : moved(p.y, c.y - p.y, k)};
 }
 
-Point away_from_centre(Point p, Point c) {
-  constexpr double inf = std::numeric_limits<double>::infinity();
-  return {p.x == c.x ? p.x : std::nextafter(p.x, p.x > c.x ? inf : -inf),
-          p.y == c.y ? p.y : std::nextafter(p.y, p.y > c.y ? inf : -inf)};
+Point away_from_centre(Point p, Point c, int k) {
+  return {p.x == c.x ? p.x : moved(p.x, p.x - c.x, k), p.y == c.y ? p.y : moved(p.y, p.y - c.y, k)};
 }
 
 Point on_circle(Point c, double rho, double angle) {
   return {c.x + rho * std::cos(angle), c.y + rho * std::sin(angle)};
+}
+
+// The point of the circle (c, r) at angle start + t, plus `out` along the radius there, computed
+// from the arc's start point a = c + r u(start): a + 2 r sin(t/2) u'(start + t/2) + out u(start +
+// t), where u' is u turned a quarter. No term is of the size of r when t is small, so a nearly flat
+// arc (a radius far larger than its chord) keeps its vertices as accurate as its chord.
+Point from_start(Point a, double r, double start, double t, double out) {
+  const double chord = 2 * r * std::sin(t / 2);
+  const double mid = start + t / 2;
+  const double end = start + t;
+  return {a.x - chord * std::sin(mid) + out * std::cos(end), a.y + chord * std::cos(mid) + out * std::sin(end)};
 }
 
 // The readers refuse bad circles with the file's context (DomainFileError::Kind::bad_curve); this
@@ -87,10 +99,10 @@ void nudge_inward(std::vector<Point>& v, Point c, double r, std::size_t& nudged)
   for (Point& p : v) {
     int steps = 0;
     while (!in_closed_disk(p, c, r)) {
-      if (++steps > kMaxNudges) {
+      if (steps > kMaxNudges) {
         throw std::logic_error("frontpack: could not round a chord vertex into its circle");
       }
-      p = toward_centre(p, c);
+      p = toward_centre(p, c, steps++);
     }
     nudged += steps > 0 ? 1 : 0;
   }
@@ -103,7 +115,7 @@ void nudge_outward(std::vector<Point>& v, std::optional<Point> a, std::optional<
                    std::size_t& nudged) {
   const Exact r2 = Exact(r) * Exact(r);
   const std::size_t n = v.size();
-  std::vector<char> moved(n, 0);
+  std::vector<int> moves(n, 0);
   const auto bound_at = [&](Point p) {
     const Exact d2 = squared_distance(p, c);
     return d2 < r2 ? d2 : r2;
@@ -114,8 +126,7 @@ void nudge_outward(std::vector<Point>& v, std::optional<Point> a, std::optional<
     }
     bool all_ok = true;
     const auto fix = [&](std::size_t k) {
-      v[k] = away_from_centre(v[k], c);
-      moved[k] = 1;
+      v[k] = away_from_centre(v[k], c, moves[k]++);
       all_ok = false;
     };
     if (a && n > 0 && !segment_keeps_off(*a, v[0], c, bound_at(*a))) {
@@ -136,7 +147,7 @@ void nudge_outward(std::vector<Point>& v, std::optional<Point> a, std::optional<
       break;
     }
   }
-  nudged += static_cast<std::size_t>(std::count(moved.begin(), moved.end(), 1));
+  nudged += static_cast<std::size_t>(std::count_if(moves.begin(), moves.end(), [](int m) { return m > 0; }));
 }
 
 double chord_deviation(double r, double step) {
@@ -146,6 +157,31 @@ double chord_deviation(double r, double step) {
 
 double tangent_deviation(double r, double step) {
   return r / std::cos(step / 2) - r;
+}
+
+// The radius, widened (domain inside) or narrowed (outside) just enough that both given endpoints
+// are exactly on the domain's side of the circle, when that takes at most kEndpointSlack of it:
+// endpoints are on the circle up to rounding (a bulge's circle is computed from them, an ARC's
+// endpoints from it). A larger gap (a LINE end joined within the join tolerance) keeps the radius.
+constexpr double kEndpointSlack = 1e-12;
+
+double endpoint_radius(const Arc& arc, Point a, Point b, bool inside) {
+  const Exact da = squared_distance(a, arc.centre);
+  const Exact db = squared_distance(b, arc.centre);
+  const Exact& far = da > db ? da : db;
+  const Exact& near = da < db ? da : db;
+  const auto ok = [&](double r) { return inside ? far <= Exact(r) * Exact(r) : near >= Exact(r) * Exact(r); };
+  if (ok(arc.radius)) {
+    return arc.radius;
+  }
+  const double ra = std::hypot(a.x - arc.centre.x, a.y - arc.centre.y);
+  const double rb = std::hypot(b.x - arc.centre.x, b.y - arc.centre.y);
+  double r = inside ? std::max(ra, rb) : std::min(ra, rb);
+  const double dir = inside ? std::numeric_limits<double>::infinity() : 0.0;
+  for (int i = 0; i < 8 && !ok(r); ++i) {
+    r = std::nextafter(r, dir);
+  }
+  return ok(r) && std::abs(r - arc.radius) <= kEndpointSlack * arc.radius ? r : arc.radius;
 }
 
 }  // namespace
@@ -170,16 +206,19 @@ std::size_t arc_segments(double radius, double sweep, bool inside, double deviat
   return std::max<std::size_t>(1, static_cast<std::size_t>(n));
 }
 
-ArcPolyline arc_polyline(const Arc& arc, Point a, Point b, bool inside, double deviation, const std::string& entity) {
-  check_arc(arc, deviation, entity);
+ArcPolyline arc_polyline(const Arc& given, Point a, Point b, bool inside, double deviation, const std::string& entity) {
+  check_arc(given, deviation, entity);
   ArcPolyline out;
+  Arc arc = given;
+  arc.radius = endpoint_radius(given, a, b, inside);
+  out.radius = arc.radius;
   const std::size_t n = arc_segments(arc.radius, arc.sweep, inside, deviation, entity);
   const double step = arc.sweep / static_cast<double>(n);
   if (inside) {
     out.segments = n;
     out.deviation = chord_deviation(arc.radius, std::abs(step));
     for (std::size_t k = 1; k < n; ++k) {
-      out.vertices.push_back(on_circle(arc.centre, arc.radius, arc.start + static_cast<double>(k) * step));
+      out.vertices.push_back(from_start(a, arc.radius, arc.start, static_cast<double>(k) * step, 0.0));
     }
     nudge_inward(out.vertices, arc.centre, arc.radius, out.nudged);
   } else {
@@ -187,9 +226,10 @@ ArcPolyline arc_polyline(const Arc& arc, Point a, Point b, bool inside, double d
     // vertices where consecutive tangents meet.
     out.segments = n + 1;
     out.deviation = tangent_deviation(arc.radius, std::abs(step));
-    const double rho = arc.radius / std::cos(step / 2);
+    const double s4 = std::sin(step / 4);
+    const double out_by = 2 * arc.radius * s4 * s4 / std::cos(step / 2);  // r / cos(step/2) - r, stably
     for (std::size_t k = 0; k < n; ++k) {
-      out.vertices.push_back(on_circle(arc.centre, rho, arc.start + (static_cast<double>(k) + 0.5) * step));
+      out.vertices.push_back(from_start(a, arc.radius, arc.start, (static_cast<double>(k) + 0.5) * step, out_by));
     }
     nudge_outward(out.vertices, a, b, arc.centre, arc.radius, out.nudged);
   }
@@ -203,6 +243,7 @@ ArcPolyline circle_polygon(const Arc& circle, bool inside, double deviation, con
   const std::size_t n = std::max<std::size_t>(4, arc_segments(circle.radius, sweep, inside, deviation, entity));
   const double step = sweep / static_cast<double>(n);
   out.segments = n;
+  out.radius = circle.radius;
   if (inside) {
     out.deviation = chord_deviation(circle.radius, step);
     for (std::size_t k = 0; k < n; ++k) {

@@ -15,6 +15,7 @@ namespace frontpack::detail {
 struct ArcPolyline {
   std::vector<Point> vertices;  ///< for an arc: the vertices between its endpoints; for a circle: all
   double deviation = 0.0;       ///< largest distance between polyline and arc, before nudges
+  double radius = 0.0;          ///< the circle's radius as used (see arc_polyline)
   std::size_t segments = 0;
   std::size_t nudged = 0;
 };
@@ -26,7 +27,9 @@ struct ArcPolyline {
                                        const std::string& entity);
 
 /// The polyline for `arc` between its given endpoints a (at arc.start) and b (at arc.start +
-/// arc.sweep). inside: chords, every constructed vertex in the closed disk (exact). Outside: the
+/// arc.sweep). The radius is first moved by at most 1e-12 of itself, when that puts both endpoints
+/// exactly on the domain's side (they are on the circle up to rounding); `radius` says which was
+/// used. inside: chords, every constructed vertex in the closed disk (exact). Outside: the
 /// tangent polyline, whose every segment keeps out of the open disk, and the two end segments no
 /// nearer to the centre than their given endpoint (exact).
 [[nodiscard]] ArcPolyline arc_polyline(const Arc& arc, Point a, Point b, bool inside, double deviation,

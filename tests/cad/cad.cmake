@@ -12,14 +12,15 @@ if(FRONTPACK_WITH_DXFLIB)
   frontpack_tool_test(cad_open_polyline 3 "open_polyline.dxf: LWPOLYLINE \\(handle 2F, line 2026\\): open contour: its end \\(1 1\\)"
     info ${C}/open_polyline.dxf)
   frontpack_tool_test(cad_ellipse 3 "ELLIPSE \\(handle 30, line 2046\\): frontpack reads CIRCLE, ARC, LINE" info ${C}/ellipse.dxf)
-  frontpack_tool_test(cad_crossing 4 "invalid domain: '.*crossing.dxf', CIRCLE \\(handle 2F, line 2026\\) and CIRCLE \\(handle 30, line 2046\\)"
+  frontpack_tool_test(cad_crossing 4 "invalid domain: '.*crossing.dxf', CIRCLE \\(handle (2F|30), line 20.6\\) and CIRCLE \\(handle (2F|30), line 20.6\\): .* cross"
     info ${C}/crossing.dxf)
   frontpack_tool_test(cad_empty 3 "empty.dxf: no closed contour" info ${C}/empty.dxf)
   frontpack_tool_test(cad_bad_deviation 5 "--max-deviation -1: expected a finite number >= 0" info ${C}/drum.dxf --max-deviation -1)
   frontpack_tool_test(cad_tiny_deviation 5 "curve deviation 1e-15 is too small for CIRCLE" info ${C}/drum.dxf --max-deviation 1e-15)
   set(O ${TOOL_OUT}/cad_fill_json)
-  frontpack_tool_check(cad_fill_json 0 "" FILE_MATCHES ${O}/drum.json
-    "\"curves\": \\[.*\"entity\": \"CIRCLE \\(handle 2F, line 2026\\)\".*\"domain_inside\": true.*\"segments\": 71"
+  # (No square bracket in the pattern: CMake's lists do not split inside one.)
+  frontpack_tool_check(cad_fill_json 0 "^$" FILE_MATCHES ${O}/drum.json
+    "\"curves\": .*\"entity\": \"CIRCLE \\(handle 2F, line 2026\\)\".*\"domain_inside\": true.*\"segments\": 71"
     ARGS fill ${C}/drum.dxf --radius uniform:0.01,0.03 --seed 2 -q --json ${O}/drum.json)
   # Every disk of a fill inside the TRUE circles, checked exactly against the DXF's circles.
   if(frontpack_reader_python)

@@ -69,6 +69,14 @@ for i in range(8):
         msp.add_circle((cx - 35 + 10 * i + 0.013 * j, cy - 20 + 10 * j + 0.007 * i), 1.0 + 0.1 * i + 0.0123 * j)
 save(doc, "many_pipes.dxf")
 
+# A nearly flat arc far from the origin: a unit square at (1e4, 1e4) whose top edge has bulge
+# -1e-6, a notch of sagitta 5e-7 on a circle of radius about 2.5e5 (tangents: the vertex between the
+# end tangents must be placed from the chord, not from the far centre).
+doc, msp = new_doc()
+x0, y0 = 1e4, 1e4
+msp.add_lwpolyline([(x0, y0, 0), (x0 + 1, y0, 0), (x0 + 1, y0 + 1, -1e-6), (x0, y0 + 1, 0)], format="xyb", close=True)
+save(doc, "flat_bulge.dxf")
+
 # Errors.
 doc, msp = new_doc()
 msp.add_lwpolyline([(0, 0), (1, 0), (1, 1)], close=False)
