@@ -97,6 +97,16 @@ save(doc, "crossing.dxf")
 doc, msp = new_doc()
 msp.add_text("nothing here")
 save(doc, "empty.dxf")
+doc, msp = new_doc()
+msp.add_circle((0, 0), 0.0)
+save(doc, "zero_radius.dxf")
+doc, msp = new_doc()
+msp.add_line((0, 0), (1, 0))
+msp.add_line((1, 0), (1, 1))
+msp.add_line((1, 1), (0, 0))
+msp.add_line((1, 0), (2, 0))
+msp.add_line((2, 0), (1, 1))
+save(doc, "branching.dxf")
 
 
 def ogr(out_name, driver, wkts, extra=()):
