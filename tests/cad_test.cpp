@@ -24,7 +24,7 @@ K::FT sq(double v) {
 }
 
 // Exact: every vertex of `ring` in the closed disk (chords of a wall the domain is inside).
-bool vertices_in_disk(const frontpack::Ring& ring, frontpack::Point c, double r) {
+[[maybe_unused]] bool vertices_in_disk(const frontpack::Ring& ring, frontpack::Point c, double r) {
   for (const auto& p : ring) {
     if (CGAL::squared_distance(K::Point_2(p.x, p.y), K::Point_2(c.x, c.y)) > sq(r)) {
       return false;
@@ -34,7 +34,7 @@ bool vertices_in_disk(const frontpack::Ring& ring, frontpack::Point c, double r)
 }
 
 // Exact: no edge of `ring` enters the open disk (tangents around a hole).
-bool edges_off_disk(const frontpack::Ring& ring, frontpack::Point c, double r) {
+[[maybe_unused]] bool edges_off_disk(const frontpack::Ring& ring, frontpack::Point c, double r) {
   for (std::size_t i = 0; i < ring.size(); ++i) {
     const auto& a = ring[i];
     const auto& b = ring[(i + 1) % ring.size()];
@@ -48,7 +48,7 @@ bool edges_off_disk(const frontpack::Ring& ring, frontpack::Point c, double r) {
 
 // The polygonal domain lies inside the true one: its area is below the true area, and by at most
 // the deviation times the curves' length.
-void expect_area(const DomainFile& f, double true_area, double curve_length) {
+[[maybe_unused]] void expect_area(const DomainFile& f, double true_area, double curve_length) {
   double deviation = 0;
   for (const auto& c : f.curves) {
     deviation = std::max(deviation, c.deviation);
