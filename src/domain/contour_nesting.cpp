@@ -137,14 +137,21 @@ Domain nest_contours(const std::vector<Contour>& contours, const DomainReadOptio
   }
   // Depth: how many contours hold this one's point. Touching or crossing contours have a point of
   // one on the other, or are reported by the validation of the whole domain below.
+  std::vector<Box> boxes;
+  boxes.reserve(n);
+  for (const Domain& d : alone) {
+    boxes.push_back(d.bbox());
+  }
   std::vector<std::size_t> depth(n, 0);
   std::vector<std::vector<std::size_t>> holders(n);
   for (std::size_t i = 0; i < n; ++i) {
     for (std::size_t j = 0; j < n; ++j) {
-      if (i == j) {
-        continue;
+      const Box b = boxes[j];
+      const Point q = probe[i];
+      if (i == j || q.x < b.xmin || q.x > b.xmax || q.y < b.ymin || q.y > b.ymax) {
+        continue;  // a point outside a contour's box is outside the contour
       }
-      const Location where = alone[j].locate(probe[i]);
+      const Location where = alone[j].locate(q);
       if (where == Location::boundary) {
         throw InvalidDomainError(InvalidDomainError::Kind::rings_cross,
                                  "'" + source + "', " + contours[i].describe() + " and " + contours[j].describe() +
