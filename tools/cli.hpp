@@ -34,11 +34,10 @@ enum Exit : int {
 
 constexpr const char* kExitCodes =
     "Exit codes: 0 success, 1 usage error, 2 unreadable input or unwritable output, 3 WKT syntax,\n"
-    "unsupported geometry or entity, open contour (DXF, GeoJSON, Shapefile), 4 invalid domain, 5 invalid option "
-    "(radius, method, format, width, seed,\n"
-    "limit), 6 packing not certified (check), 7 malformed disk file, 8 no disk fits (fill), 9 stopped\n"
-    "at --max-disks (fill; the partial packing is written), 70 internal error, 130/143/129 stopped\n"
-    "by SIGINT/SIGTERM/SIGHUP.\n"
+    "unsupported geometry or entity, open contour (DXF, GeoJSON, Shapefile), 4 invalid domain, 5\n"
+    "invalid option (radius, method, format, width, seed, limit, deviation), 6 packing not certified\n"
+    "(check), 7 malformed disk file, 8 no disk fits (fill), 9 stopped at --max-disks (fill; the\n"
+    "partial packing is written), 70 internal error, 130/143/129 stopped by SIGINT/SIGTERM/SIGHUP.\n"
     "Outputs are written to temporary files and renamed together at the end: a failed or interrupted\n"
     "run leaves every file as it was. /dev/stdout, devices and FIFOs are written through.";
 
