@@ -28,8 +28,8 @@
 namespace frontpack {
 
 enum class DomainFormat : std::uint8_t {
-  automatic = 0,  ///< by the file's extension (read_domain_file)
-  wkt = 1,        ///< .wkt, .txt: POLYGON or MULTIPOLYGON text
+  automatic = 0,  ///< by the file's extension (domain_format_of)
+  wkt = 1,        ///< .wkt, .txt, any other extension: POLYGON or MULTIPOLYGON text
   dxf = 2,        ///< .dxf: ASCII DXF (dxflib)
   geojson = 3,    ///< .geojson, .json (GDAL/OGR)
   shapefile = 4,  ///< .shp (GDAL/OGR)
@@ -38,8 +38,8 @@ enum class DomainFormat : std::uint8_t {
 [[nodiscard]] const char* to_string(DomainFormat format) noexcept;
 /// "auto", "wkt", "dxf", "geojson", "shapefile" (also "shp", "json"). Throws OptionError.
 [[nodiscard]] DomainFormat parse_domain_format(std::string_view name);
-/// The format a file's extension names (case-insensitive); throws OptionError for an extension
-/// frontpack does not know, naming the formats it reads.
+/// The format a file's extension names (case-insensitive): .dxf, .geojson or .json, .shp; WKT for
+/// any other name (.wkt, .txt, none), so that a WKT file keeps reading as it always did.
 [[nodiscard]] DomainFormat domain_format_of(const std::filesystem::path& path);
 
 /// Whether this build reads DXF, and GeoJSON and Shapefile (configure-time options
@@ -98,10 +98,10 @@ struct DomainFile {
 /// outer boundary, inside an odd number a hole of the one just around it. Annotation entities are
 /// skipped and counted; block definitions are not read.
 ///
-/// Throws IoError (unreadable file), OptionError (bad options, unknown extension, a reader this
-/// build lacks), DomainFileError (an unsupported entity or geometry, an open contour, an empty
-/// file, a bad curve), WktError, and InvalidDomainError (crossing or touching contours, a contour
-/// crossing itself), each naming the file and, for DXF, the entities and their lines.
+/// Throws IoError (unreadable file), OptionError (bad options, a reader this build lacks), DomainFileError (an
+/// unsupported entity or geometry, an open contour, an empty file, a bad curve), WktError, and InvalidDomainError
+/// (crossing or touching contours, a contour crossing itself), each naming the file and, for DXF, the entities and
+/// their lines.
 [[nodiscard]] DomainFile read_domain_file(const std::filesystem::path& path, const DomainReadOptions& options = {});
 
 }  // namespace frontpack

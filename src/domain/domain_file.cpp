@@ -90,9 +90,6 @@ DomainFormat parse_domain_format(std::string_view name) {
 
 DomainFormat domain_format_of(const std::filesystem::path& path) {
   const std::string ext = lower(path.extension().string());
-  if (ext == ".wkt" || ext == ".txt") {
-    return DomainFormat::wkt;
-  }
   if (ext == ".dxf") {
     return DomainFormat::dxf;
   }
@@ -102,9 +99,7 @@ DomainFormat domain_format_of(const std::filesystem::path& path) {
   if (ext == ".shp") {
     return DomainFormat::shapefile;
   }
-  throw OptionError("'" + path.string() + "': unknown domain file extension '" + ext +
-                    "'; expected .wkt, .txt, .dxf, .geojson, .json or .shp, or name the format (" + kFormats +
-                    "; the tool's --domain-format)");
+  return DomainFormat::wkt;  // .wkt, .txt, and any other name, as before there were other formats
 }
 
 bool has_dxf_reader() noexcept {
