@@ -218,7 +218,7 @@ TEST_F(DxfTest, ErrorsNameTheFileAndEntity) {
   const std::string dev = error_of<frontpack::OptionError>("drum.dxf", tiny);
   EXPECT_NE(dev.find("too small"), std::string::npos) << dev;
   EXPECT_THROW((void)read_domain_file(kDir + "missing.dxf"), frontpack::IoError);
-  // Any other extension is WKT, as before there were other formats.
+  // Any other extension is WKT.
   const std::string py = error_of<frontpack::WktError>("make_fixtures.py");
   EXPECT_NE(py.find("WKT error in '"), std::string::npos) << py;
 }

@@ -39,7 +39,7 @@ enum class DomainFormat : std::uint8_t {
 /// "auto", "wkt", "dxf", "geojson", "shapefile" (also "shp", "json"). Throws OptionError.
 [[nodiscard]] DomainFormat parse_domain_format(std::string_view name);
 /// The format a file's extension names (case-insensitive): .dxf, .geojson or .json, .shp; WKT for
-/// any other name (.wkt, .txt, none), so that a WKT file keeps reading as it always did.
+/// any other name (.wkt, .txt, none): a WKT file may be named anything.
 [[nodiscard]] DomainFormat domain_format_of(const std::filesystem::path& path);
 
 /// Whether this build reads DXF, and GeoJSON and Shapefile (configure-time options

@@ -99,7 +99,7 @@ DomainFormat domain_format_of(const std::filesystem::path& path) {
   if (ext == ".shp") {
     return DomainFormat::shapefile;
   }
-  return DomainFormat::wkt;  // .wkt, .txt, and any other name, as before there were other formats
+  return DomainFormat::wkt;  // .wkt, .txt, and any other name: WKT needs no extension
 }
 
 bool has_dxf_reader() noexcept {
