@@ -4,6 +4,9 @@
 #include <filesystem>
 #include <string_view>
 #include <system_error>
+#include <utility>
+
+#include "domain_files.hpp"
 
 namespace frontpack_tool::cli {
 
@@ -39,26 +42,44 @@ std::uint64_t parse_count(const char* option, const std::string& text, std::uint
   return value;
 }
 
+void add_domain_source_options(CLI::App& cmd, DomainSource& src) {
+  src.wkt_option = cmd.add_option("--wkt", src.wkt, "the domain as WKT text instead of a DOMAIN file");
+  cmd.add_option("--domain-format", src.format,
+                 "format of DOMAIN instead of its extension: wkt, dxf, geojson, shapefile");
+  cmd.add_option("--max-deviation", src.max_deviation,
+                 "largest distance between a DXF curve and the polyline that replaces it, on the domain's side "
+                 "(default: rmin/10 in fill, else 1e-3 of each curve's radius)");
+}
+
 void add_domain_options(CLI::App& cmd, DomainSource& src) {
-  auto* file = cmd.add_option("DOMAIN", src.file, "WKT file with a POLYGON or MULTIPOLYGON");
-  src.wkt_option = cmd.add_option("--wkt", src.wkt, "the domain as WKT text instead of a file");
+  auto* file = cmd.add_option("DOMAIN", src.file, kDomainFileHelp);
+  add_domain_source_options(cmd, src);
   file->excludes(src.wkt_option);
   src.wkt_option->excludes(file);
 }
 
 frontpack::Domain load(const DomainSource& src) {
+  return load_file(src).domain;
+}
+
+frontpack::DomainFile load_file(const DomainSource& src, double default_deviation) {
   if (src.from_text()) {
     if (src.wkt.find_first_not_of(" \t\r\n") == std::string::npos) {
       throw frontpack::WktError(frontpack::WktError::Kind::empty_geometry,
                                 "the WKT text given with --wkt is empty; expected a POLYGON or MULTIPOLYGON", 0, 1, 1,
                                 "--wkt");
     }
-    return frontpack::Domain::from_wkt(src.wkt);
+    frontpack::Domain domain = frontpack::Domain::from_wkt(src.wkt);
+    return {.domain = std::move(domain),
+            .format = frontpack::DomainFormat::wkt,
+            .contours = 0,
+            .ignored_entities = 0,
+            .curves = {}};
   }
   if (src.file.empty()) {
     throw CLI::RequiredError("DOMAIN or --wkt");
   }
-  return frontpack::Domain::from_wkt_file(src.file);
+  return frontpack_tool::read_domain(src.file, src.format, src.max_deviation, default_deviation);
 }
 
 std::vector<frontpack_tool::FileUse> domain_inputs(const DomainSource& src) {
@@ -88,7 +109,8 @@ int exit_code(const std::exception& e) {
       dynamic_cast<const std::filesystem::filesystem_error*>(&e) != nullptr) {
     return io;
   }
-  if (dynamic_cast<const frontpack::WktError*>(&e) != nullptr) {
+  if (dynamic_cast<const frontpack::WktError*>(&e) != nullptr ||
+      dynamic_cast<const frontpack::DomainFileError*>(&e) != nullptr) {
     return wkt;
   }
   if (dynamic_cast<const frontpack::InvalidDomainError*>(&e) != nullptr) {

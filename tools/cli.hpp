@@ -33,11 +33,11 @@ enum Exit : int {
 };
 
 constexpr const char* kExitCodes =
-    "Exit codes: 0 success, 1 usage error, 2 unreadable input or unwritable output, 3 WKT syntax or\n"
-    "unsupported geometry, 4 invalid domain, 5 invalid option (radius, method, format, width, seed,\n"
-    "limit), 6 packing not certified (check), 7 malformed disk file, 8 no disk fits (fill), 9 stopped\n"
-    "at --max-disks (fill; the partial packing is written), 70 internal error, 130/143/129 stopped\n"
-    "by SIGINT/SIGTERM/SIGHUP.\n"
+    "Exit codes: 0 success, 1 usage error, 2 unreadable input or unwritable output, 3 WKT syntax,\n"
+    "unsupported geometry or entity, open contour (DXF, GeoJSON, Shapefile), 4 invalid domain, 5\n"
+    "invalid option (radius, method, format, width, seed, limit, deviation), 6 packing not certified\n"
+    "(check), 7 malformed disk file, 8 no disk fits (fill), 9 stopped at --max-disks (fill; the\n"
+    "partial packing is written), 70 internal error, 130/143/129 stopped by SIGINT/SIGTERM/SIGHUP.\n"
     "Outputs are written to temporary files and renamed together at the end: a failed or interrupted\n"
     "run leaves every file as it was. /dev/stdout, devices and FIFOs are written through.";
 
@@ -58,14 +58,25 @@ void set_signal_watch(SignalWatch* watch);
 struct DomainSource {
   std::string file;
   std::string wkt;
+  std::string format;         // --domain-format: "" (by extension), wkt, dxf, geojson, shapefile
+  std::string max_deviation;  // --max-deviation: "" for the command's default
   CLI::Option* wkt_option = nullptr;
   [[nodiscard]] bool from_text() const { return wkt_option != nullptr && wkt_option->count() > 0; }
   [[nodiscard]] std::string name() const { return from_text() ? std::string("--wkt") : file; }
 };
 
-/// DOMAIN (a file) or --wkt TEXT, each excluding the other.
+constexpr const char* kDomainFileHelp =
+    "domain file: WKT (POLYGON or MULTIPOLYGON), DXF (closed polylines with bulges, CIRCLE, LINE+ARC), GeoJSON or "
+    "Shapefile (polygons), by extension";
+
+/// DOMAIN (a file: WKT, DXF, GeoJSON, Shapefile) or --wkt TEXT, each excluding the other, and
+/// --domain-format, --max-deviation.
 void add_domain_options(CLI::App& cmd, DomainSource& src);
-/// The domain given; throws as Domain::from_wkt(_file), or CLI::RequiredError if none is.
+/// The same without the DOMAIN positional (for commands that take more positionals).
+void add_domain_source_options(CLI::App& cmd, DomainSource& src);
+/// The domain given; throws as Domain::from_wkt or read_domain_file, or CLI::RequiredError if
+/// none is. Curves get --max-deviation, else `default_deviation` (0: the library's relative one).
+[[nodiscard]] frontpack::DomainFile load_file(const DomainSource& src, double default_deviation = 0);
 [[nodiscard]] frontpack::Domain load(const DomainSource& src);
 /// The domain file as an input that no output may overwrite (none for --wkt).
 [[nodiscard]] std::vector<FileUse> domain_inputs(const DomainSource& src);

@@ -18,9 +18,11 @@ packages=(
   libcgal-dev libboost-dev libgmp-dev libmpfr-dev
   libgtest-dev libgmock-dev libbenchmark-dev libcli11-dev
   libcairo2-dev nlohmann-json3-dev
+  libgdal-dev libdxflib-dev
 )
-# The programs that read our files back in the real-reader tests (tests/readers/): `test` only.
-test_packages=(lammps python3 python3-vtk9 yade)
+# The programs that read our files back in the real-reader tests (tests/readers/), and ezdxf for
+# the CAD tests' exact check (tests/cad/) and ogr2ogr for their fixtures: `test` only.
+test_packages=(lammps python3 python3-vtk9 yade python3-ezdxf gdal-bin)
 # libFuzzer: Clang and its runtime (`fuzz`, and `test`, which fuzzes each target for a while).
 fuzz_packages=(clang libclang-rt-14-dev)
 fuzz_targets=(wkt fill disks)

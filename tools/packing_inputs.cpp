@@ -15,11 +15,11 @@ frontpack::DiskFormat format_of(const PackingInputs& in) {
 }  // namespace
 
 void add_packing_inputs(CLI::App& cmd, PackingInputs& in) {
-  cmd.add_option("DOMAIN", in.domain.file, "WKT file with a POLYGON or MULTIPOLYGON (omit it with --wkt)");
+  cmd.add_option("DOMAIN", in.domain.file, std::string(kDomainFileHelp) + " (omit it with --wkt)");
   cmd.add_option("DISKS", in.disks,
                  "disk file: .csv (x,y,r), .txt/.yade (Yade x y z r), .data/.lmp (LAMMPS data, atom_style sphere), "
                  ".dump/.lammpstrj (LAMMPS dump with id x y radius), .vtp (VTK PolyData)");
-  in.domain.wkt_option = cmd.add_option("--wkt", in.domain.wkt, "the domain as WKT text instead of a DOMAIN file");
+  add_domain_source_options(cmd, in.domain);
   cmd.add_option("--disks-format", in.disks_format,
                  "read DISKS as csv, yade, lammps, lammps-dump or vtp instead of by its extension");
   cmd.add_option("--timestep", in.timestep, "LAMMPS dump: the snapshot of this timestep (default: the last)");

@@ -176,9 +176,38 @@ class DiskFileError : public Error {
   std::size_t column_;
 };
 
+/// A CAD or GIS file (DXF, GeoJSON, Shapefile) that does not describe a domain frontpack can read.
+/// what() reads "SOURCE: ENTITY: DETAIL", or "SOURCE: DETAIL" when no entity applies, e.g.
+/// "drum.dxf: LWPOLYLINE (handle 31, line 140): open contour: its end (1 0) meets no other entity".
+class DomainFileError : public Error {
+ public:
+  enum class Kind {
+    unreadable,          ///< the reader rejects the file (not DXF, not GeoJSON, a broken shapefile)
+    empty,               ///< no closed contour, no polygon
+    unsupported_entity,  ///< an entity or geometry type frontpack does not read (ELLIPSE, SPLINE, INSERT, a LineString)
+    open_contour,        ///< a chain of LINE, ARC or open polyline entities that does not close
+    branching_contour,   ///< three or more entity ends meet at one point
+    bad_curve,           ///< a non-finite or non-positive radius, a non-finite bulge or coordinate
+  };
+  DomainFileError(Kind kind, std::string detail, std::string source, std::string entity = {});
+
+  [[nodiscard]] Kind kind() const noexcept { return kind_; }
+  [[nodiscard]] const std::string& detail() const noexcept { return detail_; }
+  [[nodiscard]] const std::string& source() const noexcept { return source_; }
+  /// The entity named, e.g. "ARC (handle 3A, line 210)", or empty.
+  [[nodiscard]] const std::string& entity() const noexcept { return entity_; }
+
+ private:
+  Kind kind_;
+  std::string detail_;
+  std::string source_;
+  std::string entity_;
+};
+
 /// Name of an error kind, as used in messages and in the test corpus (e.g. "self_intersection").
 [[nodiscard]] const char* to_string(WktError::Kind kind) noexcept;
 [[nodiscard]] const char* to_string(InvalidDomainError::Kind kind) noexcept;
 [[nodiscard]] const char* to_string(DiskFileError::Kind kind) noexcept;
+[[nodiscard]] const char* to_string(DomainFileError::Kind kind) noexcept;
 
 }  // namespace frontpack

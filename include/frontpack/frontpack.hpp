@@ -5,6 +5,7 @@
 #include "frontpack/certify.hpp"
 #include "frontpack/deck.hpp"
 #include "frontpack/domain.hpp"
+#include "frontpack/domain_file.hpp"
 #include "frontpack/errors.hpp"
 #include "frontpack/fill.hpp"
 #include "frontpack/geometry.hpp"

@@ -39,6 +39,13 @@ DiskFileError::DiskFileError(Kind kind, std::string detail, std::string source, 
       line_(line),
       column_(column) {}
 
+DomainFileError::DomainFileError(Kind kind, std::string detail, std::string source, std::string entity)
+    : Error(source + ": " + (entity.empty() ? std::string() : entity + ": ") + detail),
+      kind_(kind),
+      detail_(std::move(detail)),
+      source_(std::move(source)),
+      entity_(std::move(entity)) {}
+
 const char* to_string(WktError::Kind kind) noexcept {
   switch (kind) {
     case WktError::Kind::syntax: return "syntax";
@@ -86,6 +93,19 @@ const char* to_string(DiskFileError::Kind kind) noexcept {
     case K::missing_item: return "missing_item";
     case K::count_mismatch: return "count_mismatch";
     case K::duplicate_id: return "duplicate_id";
+  }
+  return "unknown";
+}
+
+const char* to_string(DomainFileError::Kind kind) noexcept {
+  using K = DomainFileError::Kind;
+  switch (kind) {
+    case K::unreadable: return "unreadable";
+    case K::empty: return "empty";
+    case K::unsupported_entity: return "unsupported_entity";
+    case K::open_contour: return "open_contour";
+    case K::branching_contour: return "branching_contour";
+    case K::bad_curve: return "bad_curve";
   }
   return "unknown";
 }

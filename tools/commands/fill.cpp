@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "cli.hpp"
+#include "domain_files.hpp"
 #include "frontpack/frontpack.hpp"
 #include "outputs.hpp"
 #include "progress.hpp"
@@ -290,7 +291,9 @@ int run_fill(const FillArgs& a) {
     }
   }
   frontpack_tool::check_files(inputs, output_files);
-  const frontpack::Domain domain = load(a.src);
+  // Curves become polylines within a tenth of the smallest radius of the domain's true boundary.
+  const frontpack::DomainFile file = load_file(a.src, options.radii.min() / 10);
+  const frontpack::Domain& domain = file.domain;
   if (options.start && domain.num_polygons() > 1) {
     throw frontpack::OptionError("--start: the domain has " + std::to_string(domain.num_polygons()) +
                                  " polygons, each filled from its own start (the centre of its bounding box); "
@@ -356,7 +359,10 @@ int run_fill(const FillArgs& a) {
     }
   }
   if (!a.json.empty()) {
-    const Json j = fill_json(a, spec, options, domain, p, s, outputs, seconds_stats, seconds_since(t_start));
+    Json j = fill_json(a, spec, options, domain, p, s, outputs, seconds_stats, seconds_since(t_start));
+    if (!file.curves.empty()) {
+      j["domain"]["curves"] = curves_json(file);
+    }
     pending.write_text(a.json, j.dump(2) + "\n");
   }
   line.phase("committing the outputs");
@@ -376,7 +382,8 @@ int run_fill(const FillArgs& a) {
               << " dropped (overlap); every decision exact\n"
               << "time:        " << fmt(seconds_fill) << " s (front " << fmt(p.stats.seconds_front) << ", cull "
               << fmt(p.stats.seconds_cull) << ", overlap pass " << fmt(p.stats.seconds_overlap) << "), statistics "
-              << fmt(seconds_stats) << " s\n";
+              << fmt(seconds_stats) << " s\n"
+              << curve_lines(file, 10);
     for (const auto& o : outputs) {
       std::cerr << "wrote:       " << o.path.string() << " (" << frontpack_tool::format_name(o.format) << ")\n";
     }

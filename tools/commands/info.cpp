@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "cli.hpp"
+#include "domain_files.hpp"
 #include "frontpack/frontpack.hpp"
 #include "outputs.hpp"
 #include "render.hpp"
@@ -25,7 +26,8 @@ namespace frontpack_tool::cli {
 namespace {
 
 int run_info(const DomainSource& src) {
-  const frontpack::Domain domain = load(src);
+  const frontpack::DomainFile file = load_file(src);
+  const frontpack::Domain& domain = file.domain;
   const frontpack::Box b = domain.bbox();
   std::cout << "domain:     " << src.name() << "\n"
             << "polygons:   " << domain.num_polygons() << "\n"
@@ -35,7 +37,11 @@ int run_info(const DomainSource& src) {
             << "perimeter:  " << fmt(domain.perimeter()) << "\n"
             << "bbox:       [" << fmt(b.xmin) << ", " << fmt(b.xmax) << "] x [" << fmt(b.ymin) << ", " << fmt(b.ymax)
             << "]\n"
-            << "valid:      yes (OGC simple features, decided exactly)\n";
+            << "valid:      yes (OGC simple features, decided exactly)\n"
+            << (file.ignored_entities > 0 ? "ignored:    " + std::to_string(file.ignored_entities) +
+                                                " annotation entities (text, dimensions, hatches, points)\n"
+                                          : std::string())
+            << curve_lines(file, 50);
   return ok;
 }
 
@@ -48,7 +54,8 @@ Command add_info(CLI::App& app) {
   cmd->footer(
       "Example:\n"
       "  frontpack info shapes/concave_polygon.wkt\n"
-      "  frontpack info --wkt 'POLYGON((0 0, 2 0, 2 1, 0 1, 0 0))'");
+      "  frontpack info --wkt 'POLYGON((0 0, 2 0, 2 1, 0 1, 0 0))'\n"
+      "  frontpack info drum.dxf --max-deviation 0.001   (curves: the segments each became)");
   return {cmd, [args] { return run_info(*args); }};
 }
 

@@ -1,0 +1,163 @@
+// read_domain_file(): the format, then its reader (WKT here; DXF through dxflib, GeoJSON and
+// Shapefile through GDAL, when the build has them).
+#include "frontpack/domain_file.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <string>
+#include <utility>
+
+#include "common/format.hpp"
+#include "common/read_file.hpp"
+#include "frontpack/errors.hpp"
+
+#include "domain/contour_chain.hpp"
+#include "domain/contour_nesting.hpp"
+#if FRONTPACK_HAVE_DXFLIB
+#include "domain/dxf_reader.hpp"
+#endif
+#if FRONTPACK_HAVE_GDAL
+#include "domain/ogr_reader.hpp"
+#endif
+
+namespace frontpack {
+
+namespace {
+
+constexpr const char* kFormats = "wkt, dxf, geojson or shapefile";
+
+std::string lower(std::string_view s) {
+  std::string out(s);
+  std::transform(out.begin(), out.end(), out.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return out;
+}
+
+void check_options(const DomainReadOptions& o) {
+  if (!std::isfinite(o.max_deviation) || o.max_deviation < 0) {
+    throw OptionError("max_deviation (--max-deviation) " + detail::format_double(o.max_deviation) +
+                      ": expected a finite number >= 0 (0: relative to each curve's radius)");
+  }
+  if (!std::isfinite(o.relative_deviation) || o.relative_deviation <= 0) {
+    throw OptionError("relative_deviation " + detail::format_double(o.relative_deviation) +
+                      ": expected a finite number > 0");
+  }
+  if (!std::isfinite(o.join_tolerance) || o.join_tolerance < 0) {
+    throw OptionError("join_tolerance " + detail::format_double(o.join_tolerance) + ": expected a finite number >= 0");
+  }
+}
+
+[[noreturn, maybe_unused]] void missing_reader(DomainFormat format, const std::filesystem::path& path,
+                                               const char* library, const char* option) {
+  throw OptionError("'" + path.string() + "': this frontpack was built without " + library + ", so it cannot read " +
+                    to_string(format) + " files (configure with " + option + "=ON and " + library +
+                    " installed); WKT is always read");
+}
+
+}  // namespace
+
+const char* to_string(DomainFormat format) noexcept {
+  switch (format) {
+    case DomainFormat::automatic: return "auto";
+    case DomainFormat::wkt: return "wkt";
+    case DomainFormat::dxf: return "dxf";
+    case DomainFormat::geojson: return "geojson";
+    case DomainFormat::shapefile: return "shapefile";
+  }
+  return "unknown";
+}
+
+DomainFormat parse_domain_format(std::string_view name) {
+  const std::string n = lower(name);
+  if (n == "auto") {
+    return DomainFormat::automatic;
+  }
+  if (n == "wkt") {
+    return DomainFormat::wkt;
+  }
+  if (n == "dxf") {
+    return DomainFormat::dxf;
+  }
+  if (n == "geojson" || n == "json") {
+    return DomainFormat::geojson;
+  }
+  if (n == "shapefile" || n == "shp") {
+    return DomainFormat::shapefile;
+  }
+  throw OptionError("domain format '" + std::string(name) + "': expected auto, " + kFormats);
+}
+
+DomainFormat domain_format_of(const std::filesystem::path& path) {
+  const std::string ext = lower(path.extension().string());
+  if (ext == ".dxf") {
+    return DomainFormat::dxf;
+  }
+  if (ext == ".geojson" || ext == ".json") {
+    return DomainFormat::geojson;
+  }
+  if (ext == ".shp") {
+    return DomainFormat::shapefile;
+  }
+  return DomainFormat::wkt;  // .wkt, .txt, and any other name: WKT needs no extension
+}
+
+bool has_dxf_reader() noexcept {
+  return FRONTPACK_HAVE_DXFLIB != 0;
+}
+
+bool has_gis_reader() noexcept {
+  return FRONTPACK_HAVE_GDAL != 0;
+}
+
+DomainFile read_domain_file(const std::filesystem::path& path, const DomainReadOptions& options) {
+  check_options(options);
+  const DomainFormat format = options.format == DomainFormat::automatic ? domain_format_of(path) : options.format;
+  const std::string source = path.string();
+  switch (format) {
+    case DomainFormat::automatic:
+    case DomainFormat::wkt: {
+      Domain d = Domain::from_wkt_file(path);
+      const std::size_t rings = d.num_polygons() + d.num_holes();
+      return {
+          .domain = std::move(d), .format = DomainFormat::wkt, .contours = rings, .ignored_entities = 0, .curves = {}};
+    }
+    case DomainFormat::dxf: {
+#if FRONTPACK_HAVE_DXFLIB
+      detail::DxfContents dxf = detail::read_dxf(path);
+      const double extent = std::max(dxf.extent.width(), dxf.extent.height());
+      std::vector<detail::Contour> contours = std::move(dxf.closed);
+      std::vector<detail::Contour> chained =
+          detail::chain_pieces(std::move(dxf.open), options.join_tolerance * extent, source);
+      contours.insert(contours.end(), std::make_move_iterator(chained.begin()), std::make_move_iterator(chained.end()));
+      std::vector<CurveReport> curves;
+      Domain d = detail::nest_contours(contours, options, source, curves);
+      return {.domain = std::move(d),
+              .format = DomainFormat::dxf,
+              .contours = contours.size(),
+              .ignored_entities = dxf.ignored,
+              .curves = std::move(curves)};
+#else
+      missing_reader(format, path, "dxflib", "FRONTPACK_WITH_DXFLIB");
+#endif
+    }
+    case DomainFormat::geojson:
+    case DomainFormat::shapefile: {
+#if FRONTPACK_HAVE_GDAL
+      (void)detail::open_for_reading(path);  // IoError with the project's message when unreadable
+      detail::GisPolygons gis = detail::read_ogr(path, format == DomainFormat::geojson ? "GeoJSON" : "ESRI Shapefile");
+      std::size_t rings = 0;
+      for (const auto& names : gis.ring_names) {
+        rings += names.size();
+      }
+      Domain d = detail::polygons_to_domain(std::move(gis.polygons), gis.ring_names, source);
+      return {.domain = std::move(d), .format = format, .contours = rings, .ignored_entities = 0, .curves = {}};
+#else
+      missing_reader(format, path, "GDAL", "FRONTPACK_WITH_GDAL");
+#endif
+    }
+  }
+  throw OptionError("unknown domain format");
+}
+
+}  // namespace frontpack
