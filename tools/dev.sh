@@ -20,9 +20,10 @@ packages=(
   libcairo2-dev nlohmann-json3-dev
   libgdal-dev libdxflib-dev
 )
-# The programs that read our files back in the real-reader tests (tests/readers/), and ezdxf for
+# The programs that read our files back in the real-reader tests (tests/readers/) and run the
+# simulator decks (LAMMPS, LIGGGHTS, Yade; shapely checks the final positions), and ezdxf for
 # the CAD tests' exact check (tests/cad/) and ogr2ogr for their fixtures: `test` only.
-test_packages=(lammps python3 python3-vtk9 yade python3-ezdxf gdal-bin)
+test_packages=(lammps liggghts python3 python3-vtk9 python3-shapely yade python3-ezdxf gdal-bin)
 # libFuzzer: Clang and its runtime (`fuzz`, and `test`, which fuzzes each target for a while).
 fuzz_packages=(clang libclang-rt-14-dev)
 fuzz_targets=(wkt fill disks)
