@@ -43,9 +43,9 @@ Simulator simulator_from_name(std::string_view name) {
 
 std::vector<std::string> deck_file_names(Simulator simulator) {
   switch (simulator) {
-    case Simulator::lammps: return {"deck.data", "in.frontpack"};
-    case Simulator::liggghts: return {"deck.data", "walls.stl", "in.frontpack"};
-    case Simulator::yade: return {"packing.txt", "run.py"};
+    case Simulator::lammps: return {"deck.data", "in.frontpack", "domain.wkt"};
+    case Simulator::liggghts: return {"deck.data", "walls.stl", "in.frontpack", "domain.wkt"};
+    case Simulator::yade: return {"packing.txt", "run.py", "domain.wkt"};
   }
   return {};
 }
@@ -168,12 +168,16 @@ DeckPhysics deck_physics(const Domain& domain, std::span<const Disk> disks, std:
 std::vector<DeckFile> make_deck(const Domain& domain, std::span<const Disk> disks, std::span<const std::uint32_t> types,
                                 const DeckOptions& options) {
   const detail::DeckPhysics physics = detail::deck_physics(domain, disks, types, options);
+  std::vector<DeckFile> files;
   switch (options.simulator) {
-    case Simulator::lammps: return detail::lammps_deck(domain, disks, types, options, physics);
-    case Simulator::liggghts: return detail::liggghts_deck(domain, disks, types, options, physics);
-    case Simulator::yade: return detail::yade_deck(domain, disks, types, options, physics);
+    case Simulator::lammps: files = detail::lammps_deck(domain, disks, types, options, physics); break;
+    case Simulator::liggghts: files = detail::liggghts_deck(domain, disks, types, options, physics); break;
+    case Simulator::yade: files = detail::yade_deck(domain, disks, types, options, physics); break;
   }
-  throw OptionError("unknown simulator");
+  // The domain the packing was certified in (a CAD file's curves already made polylines), so that
+  // the state after a run can be checked against it: frontpack check DIR/domain.wkt DUMP.
+  files.push_back({"domain.wkt", domain.to_wkt() + "\n"});
+  return files;
 }
 
 }  // namespace frontpack

@@ -83,7 +83,7 @@ std::vector<DeckFile> lammps_deck(const Domain& domain, std::span<const Disk> di
      << "compute ke free ke\n"
      << "thermo_style custom step atoms c_ke\n"
      << "thermo " << every << "\n"
-     << "dump free free custom " << every << " dump.free id type radius mass x y vx vy fx fy\n"
+     << "dump free free custom " << every << " free.lammpstrj id type radius mass x y vx vy fx fy\n"
      << "dump_modify free sort id format float %.17g\n"
      << "run " << options.steps << "\n";
   return {{"deck.data", data.str()}, {"in.frontpack", in.str()}};
