@@ -377,7 +377,9 @@ frontpack_tool_test(fill_deck_walls_too_large 5 "walls: .*use a smaller wall rad
   fill --wkt "POLYGON((0 0,1 0,1 1,0 1,0 0),(0.5 0.5,0.5 0.51,0.51 0.51,0.51 0.5,0.5 0.5))" --radius uniform:0.02,0.04
   --deck lammps ${deck_dir} --density 2500 --wall-radius 0.1)
 set(O ${TOOL_OUT}/fill_deck_lammps)
-frontpack_tool_check(fill_deck_lammps 0 "wrote: +.*in.frontpack \\(lammps deck\\)"
-  FILES ${O}/deck/deck.data ${O}/deck/in.frontpack ${O}/p.csv FILE_MATCHES ${O}/p.csv "^x,y,r,type\n"
+frontpack_tool_check(fill_deck_lammps 0 "types: +2 \\(size:0.05\\): [1-9][0-9]* of type 1, [1-9][0-9]* of type 2.*wrote: +.*in.frontpack \\(lammps deck\\)"
+  FILES ${O}/deck/deck.data ${O}/deck/in.frontpack ${O}/deck/domain.wkt ${O}/p.csv FILE_MATCHES ${O}/p.csv "^x,y,r,type\n"
+  JSON ${O}/s.json "types/rule=^size:0.05$" "types/disks_per_type/1=^[1-9]" "deck/simulator=^lammps$"
+       "deck/files/2=domain\\.wkt$"
   ARGS fill ${S}/l_shape.wkt --radius uniform:0.02,0.08 --types size:0.05 -o ${O}/p.csv --deck lammps ${O}/deck
-       --density 1:2500,2:7800)
+       --density 1:2500,2:7800 --json ${O}/s.json)

@@ -358,10 +358,22 @@ int run_fill(const FillArgs& a) {
       pending.write_text(deck.dir / f.name, f.text);
     }
   }
+  // Disks per type: [k] for type k + 1.
+  std::vector<std::size_t> per_type;
+  for (const std::uint32_t t : types) {
+    per_type.resize(std::max<std::size_t>(per_type.size(), t), 0);
+    ++per_type[t - 1];
+  }
   if (!a.json.empty()) {
     Json j = fill_json(a, spec, options, domain, p, s, outputs, seconds_stats, seconds_since(t_start));
     if (!file.curves.empty()) {
       j["domain"]["curves"] = curves_json(file);
+    }
+    if (!types.empty()) {
+      j["types"] = Json{{"rule", a.types}, {"disks_per_type", per_type}};
+    }
+    if (deck.wanted) {
+      j["deck"] = Json{{"simulator", a.deck[0]}, {"directory", deck.dir.string()}, {"files", deck_files}};
     }
     pending.write_text(a.json, j.dump(2) + "\n");
   }
@@ -384,6 +396,13 @@ int run_fill(const FillArgs& a) {
               << fmt(p.stats.seconds_cull) << ", overlap pass " << fmt(p.stats.seconds_overlap) << "), statistics "
               << fmt(seconds_stats) << " s\n"
               << curve_lines(file, 10);
+    if (!types.empty()) {
+      std::cerr << "types:       " << per_type.size() << " (" << a.types << "):";
+      for (std::size_t k = 0; k < per_type.size(); ++k) {
+        std::cerr << (k == 0 ? " " : ", ") << per_type[k] << " of type " << k + 1;
+      }
+      std::cerr << "\n";
+    }
     for (const auto& o : outputs) {
       std::cerr << "wrote:       " << o.path.string() << " (" << frontpack_tool::format_name(o.format) << ")\n";
     }
