@@ -23,19 +23,6 @@ std::stop_source& stop_source() {
 
 std::atomic<int> g_signal{0};
 
-// The watcher thread. Shared libraries may start threads before main() can block the signals
-// (OpenBLAS, which GDAL brings in, starts its workers when it is loaded): a signal the kernel
-// hands to such a thread would kill the process. There the handler passes it on to the watcher,
-// which blocks it and takes it with sigwait like any other (pthread_kill is async-signal-safe).
-pthread_t g_watcher{};
-std::atomic<bool> g_watcher_set{false};
-
-extern "C" void forward_to_watcher(int sig) {
-  if (g_watcher_set.load()) {
-    (void)::pthread_kill(g_watcher, sig);
-  }
-}
-
 // How long the run has to unwind by itself after the first signal. The library polls its stop
 // token every few milliseconds; this is the bound for everything else.
 constexpr long kGraceNanoseconds = 500'000'000;
@@ -71,19 +58,7 @@ SignalWatch::SignalWatch() {
     }
   }
   ::pthread_sigmask(SIG_BLOCK, &set, nullptr);
-  std::thread watcher(watch, set);
-  g_watcher = watcher.native_handle();
-  g_watcher_set.store(true);
-  watcher.detach();
-  for (const int s : {SIGINT, SIGTERM, SIGHUP}) {
-    if (sigismember(&set, s) == 1) {
-      struct sigaction forward {};
-      forward.sa_handler = forward_to_watcher;
-      sigfillset(&forward.sa_mask);
-      forward.sa_flags = SA_RESTART;
-      (void)::sigaction(s, &forward, nullptr);
-    }
-  }
+  std::thread(watch, set).detach();
 }
 
 std::stop_token SignalWatch::token() const {

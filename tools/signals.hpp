@@ -6,9 +6,7 @@
 // throws frontpack::CancelledError, the tool unwinds (each pending output removes its temporary
 // file) and exits. Should the run not have ended after a grace period (blocked opening a FIFO that
 // has no reader, in a long sort), or at a second signal, the watcher removes the temporary files
-// itself (PendingOutputs::remove_temporaries_now) and ends the process. Threads that shared
-// libraries start before main() (OpenBLAS, through GDAL) do not block the signals: a handler there
-// passes each one on to the watcher.
+// itself (PendingOutputs::remove_temporaries_now) and ends the process.
 #pragma once
 
 #include <stop_token>

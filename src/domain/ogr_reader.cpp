@@ -1,10 +1,9 @@
+// The library's side of the GDAL module: loads frontpack_ogr.so once (dlopen), calls it, and turns
+// its result into polygons or a DomainFileError.
 #include "domain/ogr_reader.hpp"
 
-#include <cpl_error.h>
-#include <gdal_priv.h>
-#include <ogrsf_frmts.h>
+#include <dlfcn.h>
 
-#include <memory>
 #include <mutex>
 #include <string>
 
@@ -14,97 +13,51 @@ namespace frontpack::detail {
 
 namespace {
 
-using Kind = DomainFileError::Kind;
-
-// GDAL reports problems through an error handler that prints by default: a quiet one on this
-// thread while we read (the library never prints), and the last message taken into our errors.
-class QuietGdal {
- public:
-  QuietGdal() {
-    static std::once_flag registered;
-    std::call_once(registered, [] { GDALAllRegister(); });
-    CPLPushErrorHandler(CPLQuietErrorHandler);
-    CPLErrorReset();
-  }
-  ~QuietGdal() { CPLPopErrorHandler(); }
-  QuietGdal(const QuietGdal&) = delete;
-  QuietGdal& operator=(const QuietGdal&) = delete;
+// Where the module is: FRONTPACK_OGR_MODULE_BUILT (the build tree, for the tool and the tests run
+// there) and FRONTPACK_OGR_MODULE_INSTALLED (${libdir}/frontpack), both set by src/CMakeLists.txt.
+struct Module {
+  OgrReadFunction* read = nullptr;
+  std::string error;  // why it could not be loaded
 };
 
-std::string last_gdal_message() {
-  const char* m = CPLGetLastErrorMsg();
-  return m != nullptr && *m != '\0' ? std::string(": ") + m : std::string();
-}
-
-Ring ring_of(const OGRLinearRing& r) {
-  Ring out;
-  out.reserve(static_cast<std::size_t>(r.getNumPoints()));
-  for (int i = 0; i < r.getNumPoints(); ++i) {
-    out.push_back({r.getX(i), r.getY(i)});
-  }
-  return out;
-}
-
-void add_polygon(const OGRPolygon& poly, const std::string& name, GisPolygons& out) {
-  Polygon p;
-  std::vector<std::string> names;
-  if (const OGRLinearRing* outer = poly.getExteriorRing(); outer != nullptr) {
-    p.outer = ring_of(*outer);
-  }
-  names.push_back(name + ", outer ring");
-  for (int k = 0; k < poly.getNumInteriorRings(); ++k) {
-    p.holes.push_back(ring_of(*poly.getInteriorRing(k)));
-    names.push_back(name + ", hole " + std::to_string(k + 1));
-  }
-  out.polygons.push_back(std::move(p));
-  out.ring_names.push_back(std::move(names));
+const Module& module() {
+  static Module m;
+  static std::once_flag loaded;
+  std::call_once(loaded, [] {
+    for (const char* path : {FRONTPACK_OGR_MODULE_BUILT, FRONTPACK_OGR_MODULE_INSTALLED}) {
+      // RTLD_LOCAL: GDAL's symbols stay out of the program's namespace. Never closed.
+      if (void* handle = ::dlopen(path, RTLD_NOW | RTLD_LOCAL); handle != nullptr) {
+        m.read = reinterpret_cast<OgrReadFunction*>(::dlsym(handle, "frontpack_ogr_read"));
+        if (m.read != nullptr) {
+          return;
+        }
+      }
+      const char* why = ::dlerror();
+      m.error += std::string(m.error.empty() ? "" : "; ") + (why != nullptr ? why : path);
+    }
+  });
+  return m;
 }
 
 }  // namespace
 
 GisPolygons read_ogr(const std::filesystem::path& path, const char* driver) {
-  const QuietGdal quiet;
   const std::string source = path.string();
-  const char* const drivers[] = {driver, nullptr};
-  const std::unique_ptr<GDALDataset> ds(
-      GDALDataset::Open(source.c_str(), GDAL_OF_VECTOR | GDAL_OF_READONLY, drivers, nullptr, nullptr));
-  if (!ds) {
-    throw DomainFileError(Kind::unreadable,
-                          std::string("GDAL could not read the file as ") + driver + last_gdal_message(), source);
+  const Module& m = module();
+  if (m.read == nullptr) {
+    throw DomainFileError(DomainFileError::Kind::unreadable,
+                          "GeoJSON and Shapefile are read by frontpack's GDAL module (frontpack_ogr.so), which could "
+                          "not be loaded: " +
+                              m.error,
+                          source);
   }
-  GisPolygons out;
-  for (OGRLayer* layer : ds->GetLayers()) {
-    layer->ResetReading();
-    for (const auto& feature : *layer) {
-      const std::string name =
-          "layer " + std::string(layer->GetName()) + ", feature " + std::to_string(feature->GetFID());
-      const OGRGeometry* g = feature->GetGeometryRef();
-      if (g == nullptr || g->IsEmpty()) {
-        continue;  // a feature without geometry (attributes only) adds nothing
-      }
-      const OGRwkbGeometryType type = wkbFlatten(g->getGeometryType());
-      if (type == wkbPolygon) {
-        add_polygon(*g->toPolygon(), name, out);
-      } else if (type == wkbMultiPolygon) {
-        const OGRMultiPolygon* mp = g->toMultiPolygon();
-        for (int k = 0; k < mp->getNumGeometries(); ++k) {
-          add_polygon(*mp->getGeometryRef(k), name + ", polygon " + std::to_string(k), out);
-        }
-      } else {
-        throw DomainFileError(Kind::unsupported_entity,
-                              std::string("geometry type ") + OGRGeometryTypeToName(g->getGeometryType()) +
-                                  "; frontpack reads Polygon and MultiPolygon features",
-                              source, name);
-      }
-    }
+  OgrResult result;
+  m.read(source.c_str(), driver, &result);
+  if (result.error != 0) {
+    throw DomainFileError(static_cast<DomainFileError::Kind>(result.error - 1), std::move(result.message), source,
+                          std::move(result.entity));
   }
-  if (CPLGetLastErrorType() >= CE_Failure) {
-    throw DomainFileError(Kind::unreadable, "GDAL failed while reading" + last_gdal_message(), source);
-  }
-  if (out.polygons.empty()) {
-    throw DomainFileError(Kind::empty, "no Polygon or MultiPolygon feature", source);
-  }
-  return out;
+  return std::move(result.gis);
 }
 
 }  // namespace frontpack::detail

@@ -48,6 +48,10 @@ else()
   frontpack_tool_test(cad_no_dxf_reader 5 "built without dxflib" info ${C}/drum.dxf)
 endif()
 if(FRONTPACK_WITH_GDAL)
+  # GDAL is a module loaded on the first GeoJSON or Shapefile (docs/cad-gis.md), never linked.
+  add_test(NAME tool.gdal_not_linked COMMAND ldd $<TARGET_FILE:frontpack_tool>)
+  set_tests_properties(tool.gdal_not_linked PROPERTIES FAIL_REGULAR_EXPRESSION "libgdal|libopenblas"
+                       PASS_REGULAR_EXPRESSION "libc\\.so")
   frontpack_tool_test(cad_info_geojson 0 "polygons: +1.*holes: +1.*area: +3" info ${C}/plate.geojson)
   frontpack_tool_test(cad_info_shapefile 0 "polygons: +2.*holes: +1.*area: +4.75" info ${C}/islands.shp)
   frontpack_tool_test(cad_geojson_point 3 "points.geojson: layer points, feature 0: geometry type Point" info ${C}/points.geojson)
