@@ -73,7 +73,10 @@ void sample_fractions(const Domain& domain, std::span<const Disk> disks, const E
       order[fill[row_of[k]]++] = static_cast<std::uint32_t>(k);
     }
   }
-  std::vector<std::uint32_t> active;
+  // Copies of the disks meeting the row: each disk is read from `disks` once, as it is taken up
+  // (the disks of a row in index order), and the rows it spans read the compact copies (reading
+  // them through indices missed the cache at nearly every disk: 40% of the sweep's time).
+  std::vector<Disk> active;
   std::size_t next = 0;
   std::vector<Point> points(nx);
   std::vector<std::uint8_t> covered(nx);
@@ -94,16 +97,15 @@ void sample_fractions(const Domain& domain, std::span<const Disk> disks, const E
       points[i] = Point{b.xmin + (static_cast<double>(i) + unit(key)) * sx, y0 + unit(splitmix64(key)) * sy};
     }
     for (; next < row_start[j + 1]; ++next) {
-      active.push_back(order[next]);
+      active.push_back(disks[order[next]]);
     }
     std::fill(covered.begin(), covered.end(), std::uint8_t{0});
     std::size_t keep = 0;
-    for (const std::uint32_t k : active) {
-      const Disk& d = disks[k];
+    for (const Disk& d : active) {
       if (d.centre.y + d.radius < y0) {
         continue;  // below this row, hence below every later one
       }
-      active[keep++] = k;
+      active[keep++] = d;
       const double first = std::floor((d.centre.x - d.radius - b.xmin) / sx);
       const double last = std::floor((d.centre.x + d.radius - b.xmin) / sx);
       if (last < 0 || first > static_cast<double>(nx - 1)) {

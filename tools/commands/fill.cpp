@@ -10,6 +10,7 @@
 #include <limits>
 #include <memory>
 #include <numbers>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <string_view>
@@ -326,8 +327,9 @@ int run_fill(const FillArgs& a) {
     line.phase("measuring " + std::to_string(p.disks.size()) + " disks");
     const bool quality = !a.json.empty();
     s = frontpack::measure(domain, p.disks,
-                           {.requested = options.radii,
+                           {.requested = quality ? std::optional<frontpack::Radii>(options.radii) : std::nullopt,
                             .samples = quality ? StatsSamples::json : StatsSamples::text,
+                            .histogram_bins = quality ? frontpack::StatsOptions{}.histogram_bins : 0,
                             .contacts = quality,
                             .empty_circle = quality,
                             .holes = quality && a.holes,
