@@ -282,7 +282,7 @@ TEST(DiskReaders, VtpErrors) {
   compressed.replace(compressed.find("header_type=\"UInt32\""), 20,
                      "header_type=\"UInt32\" compressor=\"vtkZLibDataCompressor\"");
   expect_error([&] { return vtp_text(compressed); }, Kind::unsupported_format, 13,
-               "<DataArray Name=\"Points\">: compressed data (vtkZLibDataCompressor) is not read by frontpack");
+               "<DataArray Name='Points'>: compressed data (vtkZLibDataCompressor) is not read by frontpack");
   expect_error([&] { return vtp_text(kVtkBinary, "size"); }, Kind::missing_item, 4,
                "<Piece>: no point data array 'size' for the radii (point data arrays: 'radius')");
   std::string grid = kVtkBinary;
@@ -291,14 +291,14 @@ TEST(DiskReaders, VtpErrors) {
                "<VTKFile type='UnstructuredGrid'>: frontpack reads VTK PolyData");
   std::string bad64 = kVtkBinary;
   bad64.replace(bad64.find("GAAAAJqZ"), 1, "!");
-  expect_error([&] { return vtp_text(bad64); }, Kind::bad_number, 6, "<DataArray Name=\"radius\">: invalid base64");
+  expect_error([&] { return vtp_text(bad64); }, Kind::bad_number, 6, "<DataArray Name='radius'>: invalid base64");
   std::string shortened = kVtkBinary;
   shortened.replace(shortened.find("NumberOfPoints=\"3\""), 18, "NumberOfPoints=\"4\"");
   expect_error([&] { return vtp_text(shortened); }, Kind::count_mismatch, 13,
                "the binary header declares 72 bytes; 12 values of 8 bytes are 96");
   expect_error([] { return vtp_text(""); }, Kind::empty_file, 1, "no <VTKFile> element");
   expect_error([&] { return vtp_text(kVtkBinary.substr(0, kVtkBinary.find("</Points>"))); }, Kind::syntax, 21,
-               "the file ends inside <Points>");
+               "the file ends inside the element 'Points'");
   // ASCII: a z that is not 0, a radius <= 0, a value too many.
   const auto ascii = [](const std::string& points, const std::string& radii) {
     return "<VTKFile type=\"PolyData\"><PolyData><Piece NumberOfPoints=\"2\">\n<PointData>\n"

@@ -162,7 +162,7 @@ frontpack_tool_check(check_vtp_wkt 0 "disks: +5 .*result: +certified" ARGS check
 frontpack_tool_check(check_vtp_radius_array 7 "good\\.vtp:4: <Piece>: no point data array 'size' for the radii \\(point data arrays: 'Radius'\\)"
   ARGS check ${SQ} ${TD}/good.vtp --radius-array size)
 frontpack_tool_check(check_vtp_compressed 7
-  "compressed\\.vtp:11: <DataArray Name=\"Points\">: compressed data \\(vtkZLibDataCompressor\\) is not read by frontpack"
+  "compressed\\.vtp:11: <DataArray Name='Points'>: compressed data \\(vtkZLibDataCompressor\\) is not read by frontpack"
   ARGS check ${SQ} ${TD}/compressed.vtp)
 frontpack_tool_check(check_lammps_nonzero_z 7 "nonzero_z\\.data:13:21: z must be 0 \\(frontpack's disks are planar\\), got '0\\.0625'"
   ARGS check ${SQ} ${TD}/nonzero_z.data)

@@ -93,7 +93,7 @@ detail::Atom atom_line(const LineReader& lines, const Columns& c) {
 // The line after an "ITEM:" line, which must exist.
 void value_line(LineReader& lines, std::string_view item) {
   if (!lines.next()) {
-    lines.fail(Kind::missing_item, "the file ends after 'ITEM: " + std::string(item) + "'");
+    lines.fail(Kind::missing_item, "the file ends after " + detail::quote_text("ITEM: " + std::string(item)));
   }
 }
 

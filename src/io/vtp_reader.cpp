@@ -71,7 +71,7 @@ class VtpFile {
     throw DiskFileError(kind, detail, source_, line_at(pos));
   }
   [[noreturn]] void fail_array(Kind kind, const ArrayRef& a, std::size_t pos, const std::string& detail) const {
-    fail(kind, pos, "<DataArray Name=\"" + a.name + "\">: " + detail);
+    fail(kind, pos, "<DataArray Name=" + detail::quote_text(a.name) + ">: " + detail);
   }
 
   void scan();
@@ -89,7 +89,19 @@ class VtpFile {
   std::string compressor_;
   detail::BinaryLayout layout_;
   std::vector<Piece> pieces_;
-  ArrayRef* open_array_ = nullptr;
+  // The DataArray whose text is being read, by position: a pointer into pieces_ would dangle
+  // once a later element (malformed nesting) grows pieces_ or a piece's point_data.
+  struct OpenArray {
+    std::size_t piece = 0;
+    std::size_t array = 0;  // in point_data, unless coordinates
+    bool coordinates = false;
+    bool open = false;
+  };
+  OpenArray open_{};
+  ArrayRef& open_array() {
+    Piece& p = pieces_[open_.piece];
+    return open_.coordinates ? *p.coordinates : p.point_data[open_.array];
+  }
   std::optional<std::size_t> appended_;  // offset of the first byte after '_'
   std::string appended_encoding_;
 };
@@ -148,7 +160,7 @@ std::size_t VtpFile::start_tag(std::size_t lt, std::vector<std::string_view>& st
   const std::string_view parent = stack.empty() ? std::string_view() : stack.back();
   if (stack.empty()) {
     if (name != "VTKFile") {
-      fail(Kind::syntax, lt, "expected <VTKFile> as the root element, got <" + std::string(name) + ">");
+      fail(Kind::syntax, lt, "expected <VTKFile> as the root element, got " + detail::quote_text(name));
     }
     const std::string type = attr(attrs, "type");
     if (type != "PolyData") {
@@ -189,10 +201,10 @@ std::size_t VtpFile::start_tag(std::size_t lt, std::vector<std::string_view>& st
     Piece& piece = pieces_.back();
     if (parent == "Points") {
       piece.coordinates = std::move(a);
-      open_array_ = &*piece.coordinates;
+      open_ = {pieces_.size() - 1, 0, true, true};
     } else {
       piece.point_data.push_back(std::move(a));
-      open_array_ = &piece.point_data.back();
+      open_ = {pieces_.size() - 1, piece.point_data.size() - 1, false, true};
     }
   } else if (name == "AppendedData" && parent == "VTKFile") {
     appended_encoding_ = attr(attrs, "encoding");
@@ -205,8 +217,8 @@ std::size_t VtpFile::start_tag(std::size_t lt, std::vector<std::string_view>& st
   }
   if (!self_closing) {
     stack.push_back(name);
-  } else if (open_array_ != nullptr && name == "DataArray") {
-    open_array_ = nullptr;
+  } else if (open_.open && name == "DataArray") {
+    open_.open = false;
   }
   return gt + 1;
 }
@@ -216,8 +228,8 @@ void VtpFile::scan() {
   std::size_t pos = 0;
   while (pos < s_.size()) {
     const std::size_t lt = s_.find('<', pos);
-    if (open_array_ != nullptr && !stack.empty() && stack.back() == "DataArray") {
-      open_array_->text.push_back(std::string_view(s_).substr(pos, (lt == std::string::npos ? s_.size() : lt) - pos));
+    if (open_.open && !stack.empty() && stack.back() == "DataArray") {
+      open_array().text.push_back(std::string_view(s_).substr(pos, (lt == std::string::npos ? s_.size() : lt) - pos));
     }
     if (lt == std::string::npos) {
       break;
@@ -238,15 +250,12 @@ void VtpFile::scan() {
       pos = skip_to(">");
       const std::string_view name = detail::trim(rest.substr(2, pos - lt - 3), detail::is_c_space);
       if (stack.empty() || stack.back() != name) {
-        std::string open = "any open element";
-        if (!stack.empty()) {
-          open.assign("<").append(stack.back()).append(">");
-        }
-        fail(Kind::syntax, lt, std::string("closing tag </").append(name).append("> does not match ").append(open));
+        const std::string open = stack.empty() ? std::string("any open element") : detail::quote_text(stack.back());
+        fail(Kind::syntax, lt, "closing tag " + detail::quote_text(name) + " does not match the open element " + open);
       }
-      if (name == "DataArray" && open_array_ != nullptr && stack.size() >= 2 &&
+      if (name == "DataArray" && open_.open && stack.size() >= 2 &&
           (stack[stack.size() - 2] == "Points" || stack[stack.size() - 2] == "PointData")) {
-        open_array_ = nullptr;
+        open_.open = false;
       }
       stack.pop_back();
     } else {
@@ -258,7 +267,7 @@ void VtpFile::scan() {
          "no <VTKFile> element (expected a VTK XML PolyData file)");
   }
   if (!appended_ && !stack.empty()) {
-    fail(Kind::syntax, s_.size(), "the file ends inside <" + std::string(stack.back()) + ">");
+    fail(Kind::syntax, s_.size(), "the file ends inside the element " + detail::quote_text(stack.back()));
   }
   if (!poly_data_) {
     fail(Kind::missing_item, s_.size(), "no <PolyData> element in <VTKFile>");

@@ -62,28 +62,30 @@ endif()
 # may not leave the domain, and the same deck without its walls must be seen leaking
 # (tests/readers/check_decks.py). The gear, and a drum with a hole drawn in a DXF (CIRCLE entities,
 # made polylines on the domain's side). Skip-or-fail as above.
-set(frontpack_deck_cases lammps:shapes/gear.wkt:uniform:0.008,0.016 liggghts:shapes/gear.wkt:uniform:0.008,0.016
-                         yade:shapes/gear.wkt:uniform:0.008,0.016)
-if(FRONTPACK_WITH_DXFLIB)
-  list(APPEND frontpack_deck_cases lammps:tests/data/cad/drum.dxf:uniform:0.015,0.03
-                                   liggghts:tests/data/cad/drum.dxf:uniform:0.015,0.03)
-endif()
-foreach(deck IN LISTS frontpack_deck_cases)
-  string(REPLACE ":" ";" parts "${deck}")
-  list(GET parts 0 simulator)
-  list(GET parts 1 shape)
-  list(GET parts 2 kind)
-  list(GET parts 3 range)
-  get_filename_component(stem ${shape} NAME_WE)
-  set(name decks.${simulator}.${stem})
-  if(frontpack_reader_python)
-    add_test(NAME ${name}
-      COMMAND ${frontpack_reader_python} ${CMAKE_CURRENT_LIST_DIR}/check_decks.py ${simulator}
-              $<TARGET_FILE:frontpack_tool> ${PROJECT_SOURCE_DIR}/${shape} ${kind}:${range}
-              ${CMAKE_CURRENT_BINARY_DIR}/decks/${simulator}_${stem})
-  else()
-    add_test(NAME ${name}
-      COMMAND sh -c "echo 'python3 is not installed'; test \"$FRONTPACK_REQUIRE_READERS\" = 1 && exit 1; exit 77")
+if(FRONTPACK_BUILD_TOOLS)
+  set(frontpack_deck_cases lammps:shapes/gear.wkt:uniform:0.008,0.016 liggghts:shapes/gear.wkt:uniform:0.008,0.016
+                           yade:shapes/gear.wkt:uniform:0.008,0.016)
+  if(FRONTPACK_WITH_DXFLIB)
+    list(APPEND frontpack_deck_cases lammps:tests/data/cad/drum.dxf:uniform:0.015,0.03
+                                     liggghts:tests/data/cad/drum.dxf:uniform:0.015,0.03)
   endif()
-  set_tests_properties(${name} PROPERTIES SKIP_RETURN_CODE 77 TIMEOUT 300 LABELS readers)
-endforeach()
+  foreach(deck IN LISTS frontpack_deck_cases)
+    string(REPLACE ":" ";" parts "${deck}")
+    list(GET parts 0 simulator)
+    list(GET parts 1 shape)
+    list(GET parts 2 kind)
+    list(GET parts 3 range)
+    get_filename_component(stem ${shape} NAME_WE)
+    set(name decks.${simulator}.${stem})
+    if(frontpack_reader_python)
+      add_test(NAME ${name}
+        COMMAND ${frontpack_reader_python} ${CMAKE_CURRENT_LIST_DIR}/check_decks.py ${simulator}
+                $<TARGET_FILE:frontpack_tool> ${PROJECT_SOURCE_DIR}/${shape} ${kind}:${range}
+                ${CMAKE_CURRENT_BINARY_DIR}/decks/${simulator}_${stem})
+    else()
+      add_test(NAME ${name}
+        COMMAND sh -c "echo 'python3 is not installed'; test \"$FRONTPACK_REQUIRE_READERS\" = 1 && exit 1; exit 77")
+    endif()
+    set_tests_properties(${name} PROPERTIES SKIP_RETURN_CODE 77 TIMEOUT 300 LABELS readers)
+  endforeach()
+endif()
