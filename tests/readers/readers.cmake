@@ -86,6 +86,7 @@ if(FRONTPACK_BUILD_TOOLS)
       add_test(NAME ${name}
         COMMAND sh -c "echo 'python3 is not installed'; test \"$FRONTPACK_REQUIRE_READERS\" = 1 && exit 1; exit 77")
     endif()
-    set_tests_properties(${name} PROPERTIES SKIP_RETURN_CODE 77 TIMEOUT 300 LABELS readers)
+    # COST: started first, so that these few-second runs overlap the many short tests.
+    set_tests_properties(${name} PROPERTIES SKIP_RETURN_CODE 77 TIMEOUT 300 LABELS readers COST 50)
   endforeach()
 endif()
