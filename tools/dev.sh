@@ -5,7 +5,7 @@
 #   tools/dev.sh test   install packages, build, run the whole test suite in Release, under
 #                       AddressSanitizer + UndefinedBehaviorSanitizer, and built with Clang (the
 #                       pinned packings must come out the same bits), then run each fuzz target
-#                       for FRONTPACK_FUZZ_SECONDS (default 30) (what CI runs)
+#                       for FRONTPACK_FUZZ_SECONDS (default 20) (what CI runs)
 #   tools/dev.sh build  install packages and build (Release) only
 #   tools/dev.sh fuzz [SECONDS]  build the libFuzzer programs (Clang) and run each target
 #
@@ -100,7 +100,7 @@ case "${1:-}" in
     run_tests release
     build clang
     run_tests clang
-    run_fuzzers "${FRONTPACK_FUZZ_SECONDS:-30}"
+    run_fuzzers "${FRONTPACK_FUZZ_SECONDS:-20}"
     ;;
   fuzz)
     packages+=("${fuzz_packages[@]}")

@@ -255,7 +255,7 @@ std::string why_no_disk(const frontpack::Domain& domain, const frontpack::FillOp
 
 // Sample points of the interior and band fractions: 1M in the JSON summary (as `frontpack
 // stats`: +/- 0.0005), a quarter of that in the text summary (+/- 0.001, printed with it), which at
-// a million disks then costs under a tenth of the fill (docs/performance.md, "The summary").
+// a million disks then costs a tenth of the fill or a little more (docs/performance.md, "The summary").
 struct StatsSamples {
   static constexpr std::size_t json = 1'000'000;
   static constexpr std::size_t text = 250'000;
