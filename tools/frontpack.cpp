@@ -4,11 +4,10 @@
 // Exit codes (also in `frontpack --help` and the README):
 //   0 success, 1 usage error (unknown option, missing argument, a file given for two uses),
 //   2 unreadable input or unwritable output file, 3 WKT syntax, unsupported geometry or entity,
-//   open contour (DXF, GeoJSON, Shapefile), 4 invalid domain, 5 invalid option (radius, method, format, width, seed, limit), 6 packing not certified
-//   (check: overlaps or disks outside), 7 malformed disk file, 8 no disk fits (fill: nothing
-//   written), 9 stopped at --max-disks (fill: the certified partial packing is written),
-//   70 internal error, 128 + N stopped by signal N (130 SIGINT, 143 SIGTERM, 129 SIGHUP; nothing
-//   written).
+//   open contour (DXF, GeoJSON, Shapefile), 4 invalid domain, 5 invalid option (radius, method, format, width, seed,
+//   limit), 6 packing not certified (check: overlaps or disks outside), 7 malformed disk file, 8 no disk fits (fill:
+//   nothing written), 9 stopped at --max-disks (fill: the certified partial packing is written), 70 internal error, 128
+//   + N stopped by signal N (130 SIGINT, 143 SIGTERM, 129 SIGHUP; nothing written).
 //
 // Files (tools/outputs.hpp): outputs are written to temporary files and committed together at
 // the end, so a failed or interrupted run leaves every file as it was; /dev/stdout, devices and

@@ -145,7 +145,8 @@ std::vector<DeckFile> liggghts_deck(const Domain& domain, std::span<const Disk> 
      << "compute ke all ke\n"
      << "thermo_style custom step atoms c_ke\n"
      << "thermo " << every << "\n"
-     << "dump free all custom " << every << " free.lammpstrj id type radius mass x y vx vy fx fy\n"
+     << "dump free all custom " << every
+     << " free.lammpstrj id type radius mass x y vx vy fx fy\n"
      // LIGGGHTS's dump_modify takes a whole line's format (no "format float"): 17 digits, so that
      // the dump's numbers are the doubles (frontpack check on its first snapshot certifies).
      << "dump_modify free sort id format \"%d %d %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g\"\n"
