@@ -44,6 +44,15 @@ enum class Location : std::uint8_t { outside = 0, boundary = 1, inside = 2 };
 
 [[nodiscard]] const char* to_string(Location location) noexcept;
 
+/// Which directions of a domain wrap around (Domain::periodic()).
+enum class Periodicity : std::uint8_t {
+  none,  ///< a polygonal domain
+  x,     ///< a cell periodic in x, with walls at its bottom and top (a shear cell)
+  xy,    ///< a cell periodic in x and y (a flat torus)
+};
+
+[[nodiscard]] const char* to_string(Periodicity periodicity) noexcept;
+
 class Domain {
  public:
   /// Parses a WKT POLYGON or MULTIPOLYGON (keywords in any case, any whitespace, scientific
@@ -61,6 +70,19 @@ class Domain {
   /// the first is dropped), in either orientation. Throws InvalidDomainError.
   [[nodiscard]] static Domain from_polygons(std::vector<Polygon> polygons);
   [[nodiscard]] static Domain from_rings(Ring outer, std::vector<Ring> holes = {});
+
+  /// A periodic cell: the box [xmin, xmax) x [ymin, ymax), whose periods are xmax - xmin and
+  /// ymax - ymin, taken exactly (not rounded). A disk belongs to the cell when its centre does
+  /// (half-open on a periodic axis: xmin <= x < xmax); it may reach across a periodic side, where
+  /// it meets the images of the other disks, translated by whole periods. With Periodicity::x
+  /// the bottom and top are walls: a disk must lie between them (closed). polygons(), area(),
+  /// bbox() and to_wkt() describe the cell's rectangle (WKT carries no periodicity). Throws
+  /// InvalidDomainError for a box that is empty, not finite, beyond max_coordinate, or whose
+  /// period rounds to 0 or overflows; OptionError for Periodicity::none.
+  [[nodiscard]] static Domain periodic(const Box& cell, Periodicity axes = Periodicity::xy);
+
+  /// Periodicity::none for a polygonal domain.
+  [[nodiscard]] Periodicity periodicity() const noexcept;
 
   /// The normalised polygons, in input order.
   [[nodiscard]] const std::vector<Polygon>& polygons() const noexcept;

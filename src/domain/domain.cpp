@@ -27,6 +27,7 @@ struct Domain::Impl {
   double area = 0.0;
   double perimeter = 0.0;
   double max_abs = 0.0;
+  Periodicity periodicity = Periodicity::none;
 
   Impl() = default;
   Impl(const Impl&) = delete;
@@ -35,8 +36,8 @@ struct Domain::Impl {
 
 namespace {
 
-std::shared_ptr<const Domain::Impl> build(const detail::RawParts& parts, bool require_closed,
-                                          const detail::SourceLocator& where) {
+std::shared_ptr<Domain::Impl> build(const detail::RawParts& parts, bool require_closed,
+                                    const detail::SourceLocator& where) {
   auto impl = std::make_shared<Domain::Impl>();
   impl->rings = detail::make_ring_set(parts, require_closed, where);
   detail::validate(impl->rings, impl->grid, where);
@@ -145,6 +146,44 @@ Domain Domain::from_rings(Ring outer, std::vector<Ring> holes) {
   return from_polygons(std::move(polygons));
 }
 
+Domain Domain::periodic(const Box& cell, Periodicity axes) {
+  if (axes == Periodicity::none) {
+    throw OptionError("a periodic cell must be periodic in x (Periodicity::x) or in x and y (Periodicity::xy)");
+  }
+  using Kind = InvalidDomainError::Kind;
+  const InvalidDomainError::Site site{};
+  // (Appended piece by piece: GCC 12 warns falsely, -Wrestrict, on "[" + std::string&&.)
+  std::string box = "periodic cell [";
+  box += detail::format_double(cell.xmin);
+  box += ", " + detail::format_double(cell.xmax) + ") x [";
+  box += detail::format_double(cell.ymin);
+  box += ", " + detail::format_double(cell.ymax) + ")";
+  for (const double v : {cell.xmin, cell.ymin, cell.xmax, cell.ymax}) {
+    if (!std::isfinite(v)) {
+      throw InvalidDomainError(Kind::non_finite_coordinate, box + ": a bound is not finite", site);
+    }
+    if (std::abs(v) > max_coordinate) {
+      throw InvalidDomainError(Kind::coordinate_out_of_range,
+                               box + ": a bound is beyond " + detail::format_double(max_coordinate), site);
+    }
+  }
+  // The periods are exact differences; their rounded values (which the generator uses) must be
+  // positive and finite.
+  if (!(cell.xmax - cell.xmin > 0) || !(cell.ymax - cell.ymin > 0)) {
+    throw InvalidDomainError(Kind::zero_area, box + ": empty (each maximum must exceed its minimum)", site);
+  }
+  detail::RawParts parts(1);
+  parts[0].push_back(
+      Ring{{cell.xmin, cell.ymin}, {cell.xmax, cell.ymin}, {cell.xmax, cell.ymax}, {cell.xmin, cell.ymax}});
+  std::shared_ptr<Impl> impl = build(parts, false, {});
+  impl->periodicity = axes;
+  return Domain(std::move(impl));
+}
+
+Periodicity Domain::periodicity() const noexcept {
+  return impl_->periodicity;
+}
+
 const std::vector<Polygon>& Domain::polygons() const noexcept {
   return impl_->polygons;
 }
@@ -214,6 +253,15 @@ std::string Domain::to_wkt() const {
     out += ')';
   }
   return out;
+}
+
+const char* to_string(Periodicity periodicity) noexcept {
+  switch (periodicity) {
+    case Periodicity::none: return "none";
+    case Periodicity::x: return "x";
+    case Periodicity::xy: return "xy";
+  }
+  return "unknown";
 }
 
 const char* to_string(Location location) noexcept {
