@@ -47,6 +47,32 @@ double clearance_for(const Domain& domain, const FillOptions& o) {
   return o.clearance;
 }
 
+// A periodic cell: the closed form wraps around it (the boundary and open forms do not).
+void check_periodic(const Domain& domain, const FillOptions& o) {
+  if (domain.periodicity() == Periodicity::none) {
+    return;
+  }
+  if (o.method != Method::closed) {
+    throw OptionError(std::string("a periodic cell is filled by the closed form (method closed); the ") +
+                      to_string(o.method) + " method does not wrap around a cell");
+  }
+  // Each front segment and each disk's reach are a few rmax: at 10 rmax their images are far
+  // enough apart that the nearest image is the one meant (generate/periodic_wrap.hpp).
+  const Box cell = domain.bbox();
+  const double least = 10 * o.radii.max();
+  const bool narrow =
+      cell.xmax - cell.xmin < least || (domain.periodicity() == Periodicity::xy && cell.ymax - cell.ymin < least);
+  if (narrow) {
+    throw OptionError("a periodic cell must be at least 10 rmax = " + detail::format_double(least) +
+                      " across each periodic direction; it is " + detail::format_double(cell.xmax - cell.xmin) + " x " +
+                      detail::format_double(cell.ymax - cell.ymin));
+  }
+  if (o.start &&
+      (o.start->x < cell.xmin || o.start->x >= cell.xmax || o.start->y < cell.ymin || o.start->y >= cell.ymax)) {
+    throw OptionError("the start point must lie in the periodic cell");
+  }
+}
+
 void check_options(const FillOptions& o) {
   (void)o.radii.distribution();  // throws if empty
   if (o.start && (!std::isfinite(o.start->x) || !std::isfinite(o.start->y))) {
@@ -68,6 +94,7 @@ double seconds_since(std::chrono::steady_clock::time_point t0) {
 Packing run_fill(const Domain& domain, const FillOptions& options,
                  const std::function<bool(const Progress&)>& progress) {
   check_options(options);
+  check_periodic(domain, options);
   const RadiusDistribution& radii = options.radii.distribution();
   const double clearance = clearance_for(domain, options);
   const detail::RunBudget budget = detail::check_limits(domain, options, radii);
@@ -92,6 +119,7 @@ Packing run_fill(const Domain& domain, const FillOptions& options,
     req.max_disks = options.max_disks;
     req.memory_limit = memory_bytes;
     req.fill_voids = options.fill_voids;
+    req.periodicity = domain.periodicity();
     req.tick = meter.tick();
     req.stop = options.stop;
     detail::FrontResult result;

@@ -23,8 +23,12 @@ inline constexpr std::int32_t kBottom = 1;  // Bb
 inline constexpr std::int32_t kRight = 2;   // Br
 inline constexpr std::int32_t kFirstDisk = 3;
 
-/// The front's links over `nodes` (a Node has the flags `inside`, its centre in the box, and
-/// `blocked`, the segment starting there retired) and the bookkeeping of its active segments.
+/// The front's links over `nodes` (a Node has the flags `inside`, its centre in the box,
+/// `blocked`, the segment starting there retired, and `on_front`) and the bookkeeping of its
+/// active segments.
+///
+/// In a periodic cell the front may be several cycles (splice()), each bounding free space on its
+/// free side; the active count covers them all.
 ///
 /// Active segments are counted; on a box more than kListAspect times longer than wide
 /// (paper_front.cpp) the closed form also keeps them in a circular list in front order
@@ -86,9 +90,17 @@ class FrontList {
     return inside(s) || inside(next_[i]);
   }
 
+  /// Whether node id is on the front (a removed node keeps stale links).
+  [[nodiscard]] bool on_front(std::int32_t id) const noexcept {
+    return nodes_[static_cast<std::size_t>(id)].on_front != 0;
+  }
+
   /// Sec. 2.1: the closed front D1 -> D2 -> D3 -> D1.
   void start_closed(std::int32_t d1, std::int32_t d2, std::int32_t d3) {
     front_size_ = 3;
+    for (const std::int32_t d : {d1, d2, d3}) {
+      nodes_[static_cast<std::size_t>(d)].on_front = 1;
+    }
     link(d1, d2);
     link(d2, d3);
     link(d3, d1);
@@ -97,6 +109,9 @@ class FrontList {
   /// Sec. 3: the open front Bl -> Bb -> Br.
   void start_open() {
     front_size_ = 3;
+    for (const std::int32_t d : {kLeft, kBottom, kRight}) {
+      nodes_[static_cast<std::size_t>(d)].on_front = 1;
+    }
     next_[kRight] = kLeft;  // closes the list; Br -> Bl is never a segment
     prev_[kLeft] = kRight;
     link(kLeft, kBottom);
@@ -106,6 +121,7 @@ class FrontList {
   /// Sec. 2.2, case (a): new node i goes between c and n (c -> i -> n).
   void insert(std::int32_t c, std::int32_t i, std::int32_t n) {
     ++front_size_;
+    nodes_[static_cast<std::size_t>(i)].on_front = 1;
     if (!list_) {
       unlink_segment(c);
       link(c, i);
@@ -121,6 +137,19 @@ class FrontList {
 
   /// Cases (b)-(d): removes the front nodes first..last (in list order) and joins their neighbours.
   void remove(std::int32_t first, std::int32_t last);
+
+  /// Exchanges the successors of c and k: c -> n and k -> d become c -> d and k -> n. Both
+  /// segments keep their free side on the same hand, so each cycle still bounds free space: with c
+  /// and k on one cycle it splits in two, on two cycles they join. (A periodic front that meets
+  /// itself across the cell, or another of its cycles.) Not with the list of active segments.
+  void splice(std::int32_t c, std::int32_t k) {
+    const std::int32_t n = next(c);
+    const std::int32_t d = next(k);
+    unlink_segment(c);
+    unlink_segment(k);
+    link(c, d);
+    link(k, n);
+  }
 
   /// Retires segment s: it stays on the front, inactive.
   void retire(std::int32_t s) {
@@ -293,6 +322,7 @@ void FrontList<Open, Node>::remove(std::int32_t first, std::int32_t last) {
   }
   for (std::int32_t v = first;; v = next_[static_cast<std::size_t>(v)]) {
     unlink_segment(v);
+    nodes_[static_cast<std::size_t>(v)].on_front = 0;
     --front_size_;
     if (v == last) {
       break;

@@ -21,14 +21,17 @@
 #include <cstdint>
 #include <limits>
 #include <numbers>
+#include <span>
 
 #include "common/huge_pages.hpp"
 #include "generate/acceptance.hpp"
 #include "generate/disk_grid.hpp"
 #include "generate/front_list.hpp"
+#include "generate/periodic_images.hpp"
 #include "generate/scale.hpp"
 #include "generate/tangency.hpp"
 #include "generate/void_buckets.hpp"
+#include "generate/window_walk.hpp"
 
 namespace frontpack::detail {
 
@@ -52,6 +55,8 @@ class Front {
     std::int32_t cell_next;  // next node in the same grid cell
     std::uint8_t inside;     // centre in the box (the bottom wall counts as inside, side walls not)
     std::uint8_t blocked;    // the segment starting here is retired
+    std::uint8_t on_front;   // on the front (FrontList)
+    std::uint8_t image;      // an image of a disk across a periodic side (periodic_wrap.hpp): in the grid only
   };
   static_assert(sizeof(Node) == 32);
 
@@ -63,12 +68,15 @@ class Front {
         stats_(stats),
         frame_(*req.radii, req.clearance, region),
         overlap_(frame_.clearance, stats),
-        control_(req.max_disks, req.tick) {
+        control_(req.max_disks, req.tick),
+        region_(region) {
     box_ = Box{0, 0, frame_.width, frame_.height};
-    window_ = req.window == 0 ? std::numeric_limits<std::size_t>::max() : req.window;
     const double long_side = std::max(box_.width(), box_.height());
     const double short_side = std::min(box_.width(), box_.height());
-    const bool list = !Open && !(long_side <= kListAspect * short_side);  // NaN-safe: a degenerate box lists
+    periodic_.wrap = PeriodicWrap{req.periodicity != Periodicity::none, req.periodicity == Periodicity::xy,
+                                  frame_.width, frame_.height};
+    // (A periodic front may be several cycles, which the list of active segments does not follow.)
+    const bool list = !Open && !wrap_.any() && !(long_side <= kListAspect * short_side);  // NaN-safe
     fill_voids_ = req.fill_voids;
     classes_ = RadiusClasses<kVoidClasses>(frame_.rmin, frame_.rmax);
 
@@ -120,13 +128,22 @@ class Front {
     }
     double r = draw();
     std::size_t skips = 0;
+    std::int32_t lap = kNone;  // a periodic front: where the current run of inactive segments began
     while (front_.active() > 0 && skips <= front_.size() + 1) {
       if (control_.stop(placed(), area_ * frame_.unit.inv_k * frame_.unit.inv_k, result)) {
         break;
       }
       if (!front_.segment_active(cur)) {
+        lap = skips == 0 ? cur : lap;
         cur = front_.advance(cur);
         ++skips;
+        if (wrap_.any() && cur == lap) {
+          // A whole cycle inactive: go on with another (FrontList::splice()).
+          if (!periodic_.next_cycle(cur, [this](std::int32_t e) { return front_.on_front(e); })) {
+            break;
+          }
+          skips = 0;
+        }
         continue;
       }
       skips = 0;
@@ -156,7 +173,10 @@ class Front {
     front_.release();
     release(head_);
     voids_.release();
+    const std::size_t first_out = out_.size();
+    periodic_.drop(nodes_, kFirstDisk);
     move_out(nodes_, kFirstDisk, frame_.origin, frame_.unit.inv_k, out_);
+    periodic_.keep_in_cell(std::span<Disk>(out_).subspan(first_out), region_);
     result.fixed_bytes = fixed_bytes_;
     return result;
   }
@@ -165,21 +185,38 @@ class Front {
   // ------------------------------------------------------------------------------------------
   // Nodes, the grid over placed disks.
 
-  [[nodiscard]] std::size_t placed() const noexcept { return nodes_.size() - kFirstDisk + out_.size(); }
+  [[nodiscard]] std::size_t placed() const noexcept {
+    return nodes_.size() - kFirstDisk - periodic_.count() + out_.size();
+  }
 
   [[gnu::always_inline]] std::int32_t add_node(double x, double y, double r) {
     const auto id = static_cast<std::int32_t>(nodes_.size());
+    if (wrap_.any()) {
+      x = wrap_.wrap_x(x);
+      y = wrap_.wrap_y(y);
+    }
     std::int32_t link_to = kNone;
     if (id >= kFirstDisk) {
       const std::size_t c = cell_of(x, y);
       link_to = head_[c];
       head_[c] = id;
     }
-    const bool in =
-        id >= kFirstDisk ? (x >= box_.xmin && x <= box_.xmax && y >= box_.ymin && y <= box_.ymax) : id == kBottom;
-    nodes_.push_back(Node{x, y, r, link_to, static_cast<std::uint8_t>(in ? 1 : 0), 0});
+    // In a periodic cell every centre is in the box on a periodic axis.
+    const bool in_x = wrap_.x || (x >= box_.xmin && x <= box_.xmax);
+    const bool in_y = wrap_.y || (y >= box_.ymin && y <= box_.ymax);
+    const bool in = id >= kFirstDisk ? in_x && in_y : id == kBottom;
+    nodes_.push_back(Node{x, y, r, link_to, static_cast<std::uint8_t>(in ? 1 : 0), 0, 0, 0});
     front_.add();
+    if (wrap_.any() && id >= kFirstDisk) {
+      // A search from a centre in the cell reaches r_hi + rmax: at most 2 rmax and a clearance.
+      periodic_.add(nodes_, head_, grid_, id, 2.5 * frame_.rmax + 2 * frame_.clearance, [this] { front_.add(); });
+    }
     return id;
+  }
+
+  // Node v as seen from (x, y): its minimum image in a periodic cell.
+  [[nodiscard]] Node seen_from(std::int32_t v, double x, double y) const noexcept {
+    return periodic_.seen_from(nodes_[static_cast<std::size_t>(v)], x, y);
   }
 
   void setup_grid() { head_.assign(grid_.cells(), kNone); }  // (grid_ is set up in the constructor)
@@ -203,8 +240,11 @@ class Front {
 
   // Whether a disk at (x, y, r) overlaps front node v (a disk or a wall).
   bool overlaps_node(const Probe& p, std::int32_t v) {
-    return is_wall(v) ? Open && crosses_wall(v, p.x, p.y, p.r)
-                      : overlap_.overlaps(p, nodes_[static_cast<std::size_t>(v)]);
+    if (is_wall(v)) {
+      return Open && crosses_wall(v, p.x, p.y, p.r);
+    }
+    return wrap_.any() ? overlap_.overlaps(p, seen_from(v, p.x, p.y))
+                       : overlap_.overlaps(p, nodes_[static_cast<std::size_t>(v)]);
   }
 
   // Whether a disk at (x, y, r) overlaps any placed disk or any wall, other than walls c and n.
@@ -237,6 +277,23 @@ class Front {
                        [&](std::int32_t /*d*/, const Node& o) { return overlap_.overlaps(p, o); });
   }
 
+  // A periodic cell: a disk on the front, other than c and n, that the candidate overlaps (the
+  // first the grid scan finds, images taken for their disks), or kNone.
+  std::int32_t far_front_disk(const Probe& p, std::int32_t c, std::int32_t n) {
+    const double reach = (p.r_hi + frame_.rmax) * (1 + 1e-9);
+    std::int32_t found = kNone;
+    visit_cells(head_.data(), grid_.nx, nodes_.data(), kNone, col(p.x - reach), col(p.x + reach), row(p.y - reach),
+                row(p.y + reach), [&](std::int32_t d, const Node& o) {
+                  const std::int32_t real = periodic_.real(nodes_, d);
+                  if (real == c || real == n || !front_.on_front(real) || !overlap_.overlaps(p, o)) {
+                    return false;
+                  }
+                  found = real;
+                  return true;
+                });
+    return found;
+  }
+
   // ------------------------------------------------------------------------------------------
   // Tangent positions. The new disk goes on the free side of the segment c -> n: the right in
   // the closed form (Sec. 2.1: "placed on the right-hand side"), the left in the open form (its
@@ -260,6 +317,13 @@ class Front {
     const double gap = r + frame_.clearance;
     if (!is_wall(c) && !is_wall(n)) {
       const Node& cn = nodes_[static_cast<std::size_t>(c)];
+      if (wrap_.any()) {  // n's image next to c; the new centre brought into the cell
+        const Node nn = seen_from(n, cn.x, cn.y);
+        const bool ok = tangent_to_two(cn.x, cn.y, cn.r + gap, nn.x, nn.y, nn.r + gap, left, frame_.scale, px, py);
+        px = wrap_.wrap_x(px);
+        py = wrap_.wrap_y(py);
+        return ok;
+      }
       const Node& nn = nodes_[static_cast<std::size_t>(n)];
       // Left (open form) or right (closed form) of c -> n.
       return tangent_to_two(cn.x, cn.y, cn.r + gap, nn.x, nn.y, nn.r + gap, left, frame_.scale, px, py);
@@ -295,58 +359,6 @@ class Front {
     ++stats_.blocked_segments;
   }
 
-  [[nodiscard]] bool needs_angles(std::int32_t c) const noexcept {
-    if (window_ == std::numeric_limits<std::size_t>::max()) {
-      return true;
-    }
-    const Node& o = nodes_[static_cast<std::size_t>(c)];
-    const double dx = o.x - ox_;
-    const double dy = o.y - oy_;
-    const double far = 6.06 * static_cast<double>(window_ + 1) * frame_.rmax;
-    return dx * dx + dy * dy <= far * far;
-  }
-
-  // Sec. 2.4.2: the angle of segment s -> t seen from O, positive for anticlockwise progress.
-  [[nodiscard]] double angle(std::int32_t s, std::int32_t t) const noexcept {
-    const Node& sn = nodes_[static_cast<std::size_t>(s)];
-    const Node& tn = nodes_[static_cast<std::size_t>(t)];
-    const double ax = sn.x - ox_;
-    const double ay = sn.y - oy_;
-    const double bx = tn.x - ox_;
-    const double by = tn.y - oy_;
-    return std::atan2(ax * by - ay * bx, ax * bx + ay * by);
-  }
-
-  // Walks the front from `from`, forwards (next) or backwards (prev), and returns the first node
-  // that a disk at (x, y, r) overlaps, or kNone. The walk visits at most M nodes, stops before
-  // `stop` or `also_stop`, after the open front's end wall, and (closed form, with `angles`) once
-  // it has turned by more than half a turn about O, `acc` being the angle already turned
-  // (Sec. 2.4.2: what lies beyond is on the other side of the active segment).
-  std::int32_t first_overlap(std::int32_t from, bool forward, std::int32_t stop, std::int32_t also_stop, double acc,
-                             bool angles, const Probe& p) {
-    const std::int32_t* const step = front_.links(forward);
-    const std::int32_t end_wall = forward ? kRight : kLeft;
-    const std::size_t window = window_;
-    std::size_t steps = 0;
-    for (std::int32_t v = from; v != stop && v != also_stop && steps < window; ++steps) {
-      const auto vi = static_cast<std::size_t>(v);
-      if (angles) {
-        acc += forward ? angle(front_.prev(v), v) : angle(v, front_.next(v));
-        if (acc > std::numbers::pi) {
-          break;
-        }
-      }
-      if (overlaps_node(p, v)) {
-        return v;
-      }
-      if (Open && v == end_wall) {
-        break;
-      }
-      v = step[vi];
-    }
-    return kNone;
-  }
-
   // ------------------------------------------------------------------------------------------
   // Sec. 2.2: placing a disk of radius r on segment c -> n, with cases (a)-(d).
   // Returns the new node, or kNone after setting retired_ to the segment it retired (after cuts,
@@ -369,6 +381,7 @@ class Front {
 
   std::int32_t place_on_front(std::int32_t c, double r) {
     std::int32_t n = front_.next(c);
+    int splices = 0;  // at most two per placement: each ends in a retry, and the loop must end
     for (;;) {
       ++stats_.attempts;
       double px = 0;
@@ -394,20 +407,31 @@ class Front {
       }
       // Which front disk overlapping the new one comes first after n (subsequent, j) and
       // before c (preceding, u), within the window M and (closed form) half a turn about O.
-      // Sec. 2.4.2's half-turn limit. A walk spans at most M + 1 segments, each at most 4 rmax
-      // long (two radii plus the new disk's diameter for a cut segment), so it stays farther than
-      // rho = |c - O| - 4 (M + 1) rmax from O, and each step turns by at most pi * 4 rmax / (2 rho).
-      // From |c - O| >= 6 (M + 1) rmax the total cannot reach pi: no angle needs computing.
       std::int32_t j = kNone;
       std::int32_t u = kNone;
-      const bool angles = !Open && needs_angles(c);
+      const bool angles = walk_.needs_angles(c);
+      const auto hits = [&](std::int32_t v) { return overlaps_node(cand, v); };
       if (nn_hit && !angles) {
         j = nn;  // the forward walk's first step, taken above
       } else if (can_forward) {
-        j = first_overlap(nn, true, c, kNone, angles ? angle(c, n) : 0, angles, cand);
+        j = walk_.first_overlap(nn, true, c, kNone, angles ? walk_.angle(c, n) : 0, angles, hits);
       }
       if (can_backward) {
-        u = first_overlap(front_.prev(c), false, n, j, 0, angles, cand);
+        u = walk_.first_overlap(front_.prev(c), false, n, j, 0, angles, hits);
+      }
+      if (j == kNone && u == kNone && wrap_.any() && splices < 2) {
+        if (const std::int32_t d = far_front_disk(cand, c, n); d != kNone) {
+          // A periodic front meets itself, or another of its cycles, across free space: the
+          // segments c -> n and k -> d (k before d) become c -> d, retried, and k -> n, the entry of
+          // the cycle that a split leaves apart (FrontList::splice()).
+          const std::int32_t k = front_.prev(d);
+          front_.splice(c, k);
+          periodic_.keep_entry(n);
+          walk_.stop_turning();
+          ++splices;
+          n = d;
+          continue;
+        }
       }
       if (j == kNone && u == kNone) {
         // Every overlapped disk is off the window or enclosed by the front: the paper's window
@@ -499,8 +523,7 @@ class Front {
       return kNone;
     }
     const std::int32_t d3 = add_node(px, py, r3);
-    ox_ = (nodes_[3].x + nodes_[4].x + nodes_[5].x) / 3;
-    oy_ = (nodes_[3].y + nodes_[4].y + nodes_[5].y) / 3;
+    walk_.centre((nodes_[3].x + nodes_[4].x + nodes_[5].x) / 3, (nodes_[3].y + nodes_[4].y + nodes_[5].y) / 3);
     front_.start_closed(d1, d2, d3);
     return d1;
   }
@@ -520,16 +543,20 @@ class Front {
   RunFrame frame_;
   OverlapTest overlap_;
   Box box_;  // local: (0, 0) to (width, height)
-  std::size_t window_ = 5;
   RunControl control_;
   std::size_t fixed_bytes_ = 0;  // the grid's, for the memory limit's message
   double area_ = 0;              // sum of r^2 over the disks placed, for progress reports
-  double ox_ = 0;
-  double oy_ = 0;
+
+  // A periodic cell (periodic_wrap.hpp).
+  Box region_;  // the cell, as given
+  PeriodicImages<Node, kNone> periodic_;
+  const PeriodicWrap& wrap_ = periodic_.wrap;  // local
 
   // Not HugeVector (common/huge_pages.hpp): these fronts read near the front only.
   std::vector<Node> nodes_;
   paper::FrontList<Open, Node> front_{nodes_};
+  WindowWalk<Open, Node, paper::FrontList<Open, Node>> walk_{nodes_,      front_, periodic_.wrap, req_.window,
+                                                             frame_.rmax, kNone,  kLeft,          kRight};
   std::int32_t retired_ = kNone;  // place_on()'s retired segment
 
   CellGrid grid_;
