@@ -32,5 +32,9 @@ using Clock = std::chrono::steady_clock;
 [[nodiscard]] std::string fraction_line(const frontpack::PackingStats& s);
 /// "min 0.01, mean 0.03, max 0.05, sd ..., median by area ..."
 [[nodiscard]] std::string radii_line(const frontpack::SizeStats& s);
+/// A fill to a fraction, count or level (Packing::target): what was asked and what was reached.
+[[nodiscard]] Json target_json(const frontpack::TargetReport& t);
+/// "fraction 0.7000 asked, 0.6996 reached (dense 0.8553; radii filled 1.09x, 412 disks thinned; 2 fills)"
+[[nodiscard]] std::string target_line(const frontpack::TargetReport& t);
 
 }  // namespace frontpack_tool
