@@ -182,7 +182,9 @@ Json target_json(const frontpack::TargetReport& t) {
   if (t.count_requested > 0) {
     j["count_requested"] = t.count_requested;
   }
-  j["height"] = t.height;
+  if (t.height) {
+    j["height"] = *t.height;
+  }
   j["outside_original"] = t.outside_original;
   return j;
 }
@@ -195,11 +197,11 @@ std::string target_line(const frontpack::TargetReport& t) {
            std::to_string(t.removed) + " disks thinned; " + std::to_string(t.fills) + " fills)";
   } else if (t.count_requested > 0) {
     line = "count " + std::to_string(t.count_requested) + " asked; fraction " + fmt4(t.fraction_achieved) +
-           " of the area filled";
+           " of the domain";
   } else {
     line = "fraction " + fmt4(t.fraction_achieved) + " of the area filled";
   }
-  return line + ", below y = " + fmt(t.height) + " (area " + fmt(t.area_filled) + ")";
+  return t.height ? line + ", below y = " + fmt(*t.height) + " (area " + fmt(t.area_filled) + ")" : line;
 }
 
 }  // namespace frontpack_tool

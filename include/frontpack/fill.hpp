@@ -97,10 +97,11 @@ struct FillOptions {
   std::optional<double> fraction{};
   /// Fill to a count: stop once this many disks are placed (0: no count). The result has exactly
   /// `count` disks unless the domain holds fewer (then the dense fill, Packing::target says so).
-  /// The filled region is compact: the open form fills from the bottom, layer by layer; the closed
-  /// form grows a blob from its start point. The boundary method starts on every wall at once, so
-  /// its first disks line all the walls: it refuses a count (OptionError naming the forms that take
-  /// one). Independent of max_disks (a hard limit that truncates), which must not be below it.
+  /// The filled region is compact: the open form keeps the `count` disks of a dense fill whose
+  /// tops (y + r) are lowest (its front climbs as a ramp, so its first disks would not be level);
+  /// the closed form keeps the first `count` disks it placed, a blob grown from its start point. The boundary method
+  /// starts on every wall at once, so its first disks line all the walls: it refuses a count (OptionError naming the
+  /// forms that take one). Independent of max_disks (a hard limit that truncates), which must not be below it.
   std::size_t count = 0;
   /// Fill to a level: only the part of the domain below y = height (the domain clipped by the
   /// half-plane y <= height, whose new vertices lie on y = height and inside the domain, decided
@@ -119,7 +120,7 @@ struct TargetReport {
   std::size_t removed = 0;        ///< disks removed to reach the fraction
   std::size_t fills = 0;          ///< fills run
   std::size_t count_requested = 0;
-  double height = 0;                 ///< the level (FillOptions::height), or the domain's top if none
+  std::optional<double> height{};    ///< FillOptions::height
   double area_filled = 0;            ///< Domain::area() of the part filled (the clipped domain)
   std::size_t outside_original = 0;  ///< disks culled against the unclipped domain (0 expected)
 };

@@ -21,7 +21,6 @@ Packing fill_to_count(const Domain& domain, const FillOptions& options, const Pl
   TargetReport t;
   t.count_requested = n;
   t.area_filled = domain.area();
-  t.height = domain.bbox().ymax;
   // The paper's forms cull the disks that overhang the polygons' boxes: generate a little more
   // than the count, and more again (from the start: the run is deterministic) if that fell short.
   std::size_t cap = o.method == Method::open ? o.max_disks : std::min(o.max_disks, n + n / 8 + 64);

@@ -44,7 +44,6 @@ Packing fill_to_fraction(const Domain& domain, const FillOptions& options, const
   TargetReport t;
   t.fraction_requested = f;
   t.area_filled = area;
-  t.height = domain.bbox().ymax;
 
   Packing dense = plain(domain, o, o.max_disks);
   t.fills = 1;
