@@ -50,8 +50,9 @@ Packing fill_to_fraction(const Domain& domain, const FillOptions& options, const
   const double phi = disk_area(dense.disks) / area;
   t.fraction_dense = phi;
   if (dense.truncated || dense.cancelled) {
-    dense.target = t;
+    // Stopped by max_disks or the caller: what it has, as it is (Packing::truncated, cancelled).
     t.fraction_achieved = phi;
+    dense.target = t;
     return dense;
   }
   if (phi < f - kTolerance) {
