@@ -17,6 +17,7 @@
 #include "generate/run_control.hpp"
 #include "generate/settings.hpp"
 #include "limits.hpp"
+#include "target/targets.hpp"
 
 namespace frontpack {
 
@@ -91,8 +92,8 @@ double seconds_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
-Packing run_fill(const Domain& domain, const FillOptions& options,
-                 const std::function<bool(const Progress&)>& progress) {
+Packing run_plain(const Domain& domain, const FillOptions& options,
+                  const std::function<bool(const Progress&)>& progress, std::size_t generation_cap) {
   check_options(options);
   check_periodic(domain, options);
   const RadiusDistribution& radii = options.radii.distribution();
@@ -116,7 +117,7 @@ Packing run_fill(const Domain& domain, const FillOptions& options,
       req.start = options.start;
     }
     req.clearance = clearance;
-    req.max_disks = options.max_disks;
+    req.max_disks = std::min(options.max_disks, generation_cap);
     req.memory_limit = memory_bytes;
     req.fill_voids = options.fill_voids;
     req.periodicity = domain.periodicity();
@@ -148,6 +149,17 @@ Packing run_fill(const Domain& domain, const FillOptions& options,
   packing.disks = std::move(raw);
   meter.finish(packing.certificate.generated);
   return packing;
+}
+
+// A fill to a fraction, count or level runs the plain fill (target/targets.hpp).
+Packing run_fill(const Domain& domain, const FillOptions& options,
+                 const std::function<bool(const Progress&)>& progress) {
+  if (!detail::has_target(options)) {
+    return run_plain(domain, options, progress, options.max_disks);
+  }
+  return detail::fill_with_targets(
+      domain, options,
+      [&progress](const Domain& d, const FillOptions& o, std::size_t cap) { return run_plain(d, o, progress, cap); });
 }
 
 }  // namespace

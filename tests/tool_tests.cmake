@@ -384,3 +384,20 @@ frontpack_tool_check(fill_deck_lammps 0 "types: +2 \\(size:0.05\\): [1-9][0-9]* 
        "deck/files/2=domain\\.wkt$"
   ARGS fill ${S}/l_shape.wkt --radius uniform:0.02,0.08 --types size:0.05 -o ${O}/p.csv --deck lammps ${O}/deck
        --density 1:2500,2:7800 --json ${O}/s.json)
+
+# Fills with a target (docs/fraction.md): a fraction within 0.002, too high a fraction naming the
+# one reached, a count, a level.
+frontpack_tool_test(fill_fraction 0 "target: +fraction 0\\.7000 asked, 0\\.(69[89][0-9]|70[01][0-9]) reached \\(dense 0\\.[0-9]+; radii filled 1\\.[0-9]+x"
+  fill ${S}/plate_with_holes.wkt --radius uniform:0.004,0.04 --fraction 0.7)
+frontpack_tool_test(fill_fraction_too_high 5 "fraction 0\\.95: the boundary method reaches 0\\.8[0-9]+ for uniform: radius in \\[0\\.004, 0\\.04\\] in this domain"
+  fill ${S}/plate_with_holes.wkt --radius uniform:0.004,0.04 --fraction 0.95)
+frontpack_tool_test(fill_fraction_range 5 "fraction 1\\.5: a packing fraction \\(disk area / domain area\\) must lie strictly between 0 and 1"
+  fill ${S}/plate_with_holes.wkt --fraction 1.5)
+frontpack_tool_test(fill_count_open 0 "disks: +500 \\(open form.*target: +count 500 asked"
+  fill ${S}/plate_with_holes.wkt --method open --radius uniform:0.01,0.02 --count 500)
+frontpack_tool_test(fill_count_boundary 5 "count: the boundary method starts its fronts on every wall at once.*use --method open"
+  fill ${S}/plate_with_holes.wkt --count 500)
+frontpack_tool_test(fill_height 0 "target: +fraction 0\\.[0-9]+ of the area filled, below y = 0\\.75 \\(area "
+  fill ${S}/plate_with_holes.wkt --radius uniform:0.01,0.02 --height 0.75)
+frontpack_tool_test(fill_height_below 5 "height -1: the level must lie above the domain's lowest point, y = 0"
+  fill ${S}/plate_with_holes.wkt --height -1)

@@ -171,4 +171,37 @@ std::string radii_line(const frontpack::SizeStats& s) {
          ", median by area " + fmt(s.median_area);
 }
 
+Json target_json(const frontpack::TargetReport& t) {
+  Json j{{"fraction_achieved", t.fraction_achieved}, {"area_filled", t.area_filled}, {"fills", t.fills}};
+  if (t.fraction_requested > 0) {
+    j["fraction_requested"] = t.fraction_requested;
+    j["fraction_dense"] = t.fraction_dense;
+    j["scale"] = t.scale;
+    j["removed"] = t.removed;
+  }
+  if (t.count_requested > 0) {
+    j["count_requested"] = t.count_requested;
+  }
+  if (t.height) {
+    j["height"] = *t.height;
+  }
+  j["outside_original"] = t.outside_original;
+  return j;
+}
+
+std::string target_line(const frontpack::TargetReport& t) {
+  std::string line;
+  if (t.fraction_requested > 0) {
+    line = "fraction " + fmt4(t.fraction_requested) + " asked, " + fmt4(t.fraction_achieved) + " reached (dense " +
+           fmt4(t.fraction_dense) + "; radii filled " + fmt4(t.scale) + "x then shrunk back, " +
+           std::to_string(t.removed) + " disks thinned; " + std::to_string(t.fills) + " fills)";
+  } else if (t.count_requested > 0) {
+    line = "count " + std::to_string(t.count_requested) + " asked; fraction " + fmt4(t.fraction_achieved) +
+           " of the domain";
+  } else {
+    line = "fraction " + fmt4(t.fraction_achieved) + " of the area filled";
+  }
+  return t.height ? line + ", below y = " + fmt(*t.height) + " (area " + fmt(t.area_filled) + ")" : line;
+}
+
 }  // namespace frontpack_tool

@@ -32,5 +32,10 @@ using Clock = std::chrono::steady_clock;
 [[nodiscard]] std::string fraction_line(const frontpack::PackingStats& s);
 /// "min 0.01, mean 0.03, max 0.05, sd ..., median by area ..."
 [[nodiscard]] std::string radii_line(const frontpack::SizeStats& s);
+/// A fill to a fraction, count or level (Packing::target): what was asked and what was reached.
+[[nodiscard]] Json target_json(const frontpack::TargetReport& t);
+/// "fraction 0.7000 asked, 0.6999 reached (dense 0.8305; radii filled 1.0801x then shrunk back, 51 disks
+/// thinned; 3 fills)", ", below y = H (area A)" with a level.
+[[nodiscard]] std::string target_line(const frontpack::TargetReport& t);
 
 }  // namespace frontpack_tool

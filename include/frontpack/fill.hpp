@@ -82,6 +82,47 @@ struct FillOptions {
   /// Once a stop is requested (from another thread, or a signal-handling thread), the run throws
   /// CancelledError within milliseconds, in generation or in certification, and returns nothing.
   std::stop_token stop{};
+  /// A target packing fraction F in (0, 1) (total disk area / Domain::area(), as measure()
+  /// reports it; of the part below `height` when that is set); none: as dense as the method fills.
+  /// The result's fraction is F within 0.002 (Packing::target), its radii are the drawn radii of
+  /// `radii` exactly (the size distribution is the request's, as in a dense fill), and it is
+  /// certified as every fill. How (docs/fraction.md): a first fill with `radii` measures the
+  /// method's dense fraction for this domain and distribution; a second fills with every drawn
+  /// radius scaled up by s > 1, each disk then shrunk about its centre back to its drawn radius
+  /// (which keeps every disk inside and every pair apart, exactly), and the disks whose
+  /// neighbourhoods are densest are removed until the fraction is F. The packing has no contacts:
+  /// every disk has a gap around it (a DEM compression brings them into contact). F above the dense
+  /// fraction: OptionError naming the fraction reached and the distribution. Costs two or three
+  /// fills. Deterministic for a seed.
+  std::optional<double> fraction{};
+  /// Fill to a count: stop once this many disks are placed (0: no count). The result has exactly
+  /// `count` disks unless the domain holds fewer (then the dense fill, Packing::target says so).
+  /// The filled region is compact: the open form keeps the `count` disks of a dense fill whose
+  /// tops (y + r) are lowest (its front climbs as a ramp, so its first disks would not be level);
+  /// the closed form keeps the first `count` disks it placed, a blob grown from its start point. The boundary method
+  /// starts on every wall at once, so its first disks line all the walls: it refuses a count (OptionError naming the
+  /// forms that take one). Independent of max_disks (a hard limit that truncates), which must not be below it.
+  std::size_t count = 0;
+  /// Fill to a level: only the part of the domain below y = height (the domain clipped by the
+  /// half-plane y <= height, whose new vertices lie on y = height and inside the domain, decided
+  /// exactly) is filled; every disk lies in the domain and below the level (y + r <= height).
+  /// A level at or below the domain's lowest point: OptionError; at or above its highest point:
+  /// the whole domain. A clip that splits a polygon (a U-shape) gives several polygons.
+  std::optional<double> height{};
+};
+
+/// What a fill to a target fraction, count or level achieved (Packing::target).
+struct TargetReport {
+  double fraction_requested = 0;  ///< FillOptions::fraction (0: none)
+  double fraction_achieved = 0;   ///< total disk area / area filled (the clipped area with a height)
+  double fraction_dense = 0;      ///< the method's dense fraction here, measured by the first fill
+  double scale = 1;               ///< s: the radii of the last fill were the drawn radii times s
+  std::size_t removed = 0;        ///< disks removed to reach the fraction
+  std::size_t fills = 0;          ///< fills run
+  std::size_t count_requested = 0;
+  std::optional<double> height{};    ///< FillOptions::height
+  double area_filled = 0;            ///< Domain::area() of the part filled (the clipped domain)
+  std::size_t outside_original = 0;  ///< disks culled against the unclipped domain (0 expected)
 };
 
 /// The documented bound on fill()'s peak memory per generated disk (measured 42-61 bytes on the
@@ -132,6 +173,8 @@ struct Packing {
   FillStats stats;
   bool truncated = false;  ///< max_disks was reached
   bool cancelled = false;  ///< the progress callback asked to stop
+  /// Set when FillOptions::fraction, count or height is.
+  std::optional<TargetReport> target{};
 };
 
 /// Fills the domain. Throws OptionError, LimitError, CancelledError (FillOptions::stop).

@@ -86,6 +86,9 @@ struct FillArgs {
   std::string density;              // --density SPEC
   std::string thickness;            // --thickness T
   std::string wall_radius;          // --wall-radius W
+  std::string fraction;             // --fraction F
+  std::string count;                // --count N
+  std::string height;               // --height H
 };
 
 // A finite double for OPTION, read exactly as from_chars reads it (no locale). Throws OptionError.
@@ -141,6 +144,18 @@ void apply_front_options(const FillArgs& a, frontpack::FillOptions& options) {
     }
   }
   options.fill_voids = !a.no_voids;
+  if (!a.fraction.empty()) {
+    options.fraction = parse_double("--fraction", a.fraction);
+  }
+  if (!a.count.empty()) {
+    options.count = parse_count("--count", a.count, std::numeric_limits<std::uint64_t>::max());
+    if (options.count == 0) {
+      throw frontpack::OptionError("--count 0: expected a number of disks >= 1");
+    }
+  }
+  if (!a.height.empty()) {
+    options.height = parse_double("--height", a.height);
+  }
 }
 
 // The deck's options, checked before any work; the directory is created if missing.
@@ -227,6 +242,9 @@ Json fill_json(const FillArgs& a, const std::string& spec, const frontpack::Fill
                       {"overlap_pass", p.stats.seconds_overlap},
                       {"statistics", seconds_stats},
                       {"total", seconds_total}};
+  if (p.target) {
+    j["target"] = frontpack_tool::target_json(*p.target);
+  }
   j["outputs"] = outs;
   return j;
 }
@@ -391,6 +409,7 @@ int run_fill(const FillArgs& a) {
               << "radius:      " << spec << (a.radius.empty() ? " (the default; set with --radius)" : "") << "\n"
               << "fraction:    " << frontpack_tool::fraction_line(s) << "\n"
               << "radii:       " << frontpack_tool::radii_line(s.sizes) << "\n"
+              << (p.target ? "target:      " + frontpack_tool::target_line(*p.target) + "\n" : std::string())
               << "certificate: " << (c.dropped == 0 ? "certified" : "certified after repair") << ": " << c.generated
               << " generated, " << c.culled << " culled (not inside), " << c.dropped
               << " dropped (overlap); every decision exact\n"
@@ -481,6 +500,13 @@ Command add_fill(CLI::App& app) {
                   "docs/robustness.md)");
   cmd->add_flag("--no-voids", args->no_voids,
                 "the paper's forms as published: no void filling (refused by --method boundary)");
+  cmd->add_option("--fraction", args->fraction,
+                  "F: a packing fraction below the method's dense one, within 0.002, the radii as requested "
+                  "(no contacts: docs/fraction.md)");
+  cmd->add_option("--count", args->count,
+                  "N: stop after N disks, a compact region: --method open fills from the bottom, closed from the "
+                  "start point");
+  cmd->add_option("--height", args->height, "H: fill only the part of the domain below y = H");
   cmd->add_flag("--progress", args->progress,
                 "show the progress line even when stderr is not a terminal (one line per phase, for logs)");
   cmd->add_flag("-q,--quiet", args->quiet, "print nothing but errors (no summary, no progress line)");

@@ -1,0 +1,30 @@
+// Fills with a target: a packing fraction, a count or a level (FillOptions::fraction, count,
+// height). Each runs the plain fill (fill.cpp) one or more times and works on its certified
+// result; nothing here places a disk.
+#pragma once
+
+#include <cstddef>
+#include <functional>
+
+#include "frontpack/fill.hpp"
+
+namespace frontpack::detail {
+
+/// The plain fill: `options` without targets, its generators stopped after `generation_cap`
+/// disks generated (culled ones included; at most options.max_disks).
+using PlainFill = std::function<Packing(const Domain&, const FillOptions&, std::size_t generation_cap)>;
+
+/// Whether options ask for a target.
+[[nodiscard]] bool has_target(const FillOptions& options) noexcept;
+
+/// Checks the targets' options, then fills below the level (if any), to the fraction or to the
+/// count (at most one of the two). Throws OptionError.
+[[nodiscard]] Packing fill_with_targets(const Domain& domain, const FillOptions& options, const PlainFill& plain);
+
+/// The fill to a fraction (target_fraction.cpp): options.fraction set, no height, no count.
+[[nodiscard]] Packing fill_to_fraction(const Domain& domain, const FillOptions& options, const PlainFill& plain);
+
+/// The fill to a count (fill_count.cpp): options.count > 0, no height, no fraction.
+[[nodiscard]] Packing fill_to_count(const Domain& domain, const FillOptions& options, const PlainFill& plain);
+
+}  // namespace frontpack::detail
