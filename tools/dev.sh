@@ -19,11 +19,15 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev libcli11-dev
   libcairo2-dev nlohmann-json3-dev
   libgdal-dev libdxflib-dev
+  # the Python module (python/), for Debian's /usr/bin/python3
+  pybind11-dev python3-dev python3-numpy
 )
 # The programs that read our files back in the real-reader tests (tests/readers/) and run the
 # simulator decks (LAMMPS, LIGGGHTS, Yade; shapely checks the final positions), and ezdxf for
 # the CAD tests' exact check (tests/cad/) and ogr2ogr for their fixtures: `test` only.
-test_packages=(lammps liggghts python3 python3-vtk9 python3-shapely yade python3-ezdxf gdal-bin)
+# The Python module's tests (python/tests/): pytest, shapely domains, the progress bar, the example's plot.
+test_packages=(lammps liggghts python3 python3-vtk9 python3-shapely yade python3-ezdxf gdal-bin
+  python3-pytest python3-tqdm python3-matplotlib)
 # libFuzzer: Clang and its runtime (`fuzz`, and `test`, which fuzzes each target for a while).
 fuzz_packages=(clang libclang-rt-14-dev)
 fuzz_targets=(wkt fill disks)

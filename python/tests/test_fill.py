@@ -1,0 +1,210 @@
+"""frontpack.fill: arrays without copies, certificates, determinism, progress, cancellation."""
+
+import os
+import signal
+import subprocess
+import sys
+import threading
+
+import numpy as np
+import pytest
+
+import frontpack
+from conftest import need, same_bits
+
+L_SHAPE = "POLYGON((0 0,2 0,2 1,1 1,1 2,0 2,0 0))"
+
+
+def test_disks_are_a_view_of_the_library_vector():
+    p = frontpack.fill(L_SHAPE, "uniform:0.02,0.05", seed=1)
+    a = p.disks
+    assert a.dtype == np.float64 and a.ndim == 2 and a.shape[1] == 3 and len(p) == a.shape[0] > 100
+    assert a.flags.c_contiguous
+    assert not a.flags.owndata  # numpy did not allocate it: no copy was made
+    assert type(a.base).__name__ == "PyCapsule"  # it views the std::vector the capsule owns
+    assert p.disks is a  # the attribute is the one array, not a copy per access
+    del p  # the array keeps the vector alive
+    assert np.isfinite(a).all() and (a[:, 2] >= 0.02).all()
+
+
+def test_fill_is_certified(square_with_hole):
+    p = frontpack.fill(square_with_hole, frontpack.Radii.uniform(0.01, 0.03), seed=2)
+    report = frontpack.certify(square_with_hole, p.disks)
+    assert report and report.valid
+    assert report.outside.size == 0 and report.overlapping.shape == (0, 2)
+    assert p.certificate.exact and p.certificate.dropped == 0
+    assert p.certificate.generated >= len(p)
+    assert p.stats.attempts > 0 and p.stats.seconds_front >= 0
+    assert not p.truncated and not p.cancelled
+    # an independent check with shapely's floating point: centres in the polygon, not in the hole
+    geometry = need("shapely.geometry")
+    for x, y, r in p.disks[::7]:
+        assert square_with_hole.contains(geometry.Point(x, y))
+        assert square_with_hole.exterior.distance(geometry.Point(x, y)) >= r * (1 - 1e-9)
+        assert square_with_hole.interiors[0].distance(geometry.Point(x, y)) >= r * (1 - 1e-9)
+
+
+def test_same_seed_same_bits_other_seed_other_disks():
+    a = frontpack.fill(L_SHAPE, "lognormal:0.02,1.5", seed=7).disks
+    b = frontpack.fill(frontpack.Domain.from_wkt(L_SHAPE), frontpack.Radii("lognormal:0.02,1.5"), seed=7).disks
+    c = frontpack.fill(L_SHAPE, "lognormal:0.02,1.5", seed=8).disks
+    assert same_bits(a, b)
+    assert not same_bits(a, c)
+
+
+def test_the_same_disks_as_the_tool(tmp_path, shapes):
+    tool = os.environ.get("FRONTPACK_TOOL")
+    if not tool:
+        pytest.skip("FRONTPACK_TOOL is not set (the build has no tool)")
+    out = tmp_path / "tool.csv"
+    subprocess.run([tool, "fill", str(shapes / "gear.wkt"), "--radius", "uniform:0.01,0.03", "--seed", "5",
+                    "--method", "closed", "-q", "-o", str(out)], check=True)
+    p = frontpack.fill(shapes / "gear.wkt", "uniform:0.01,0.03", seed=5, method="closed")
+    assert same_bits(frontpack.read_disks(out), p.disks)
+
+
+def test_radius_forms_and_options():
+    assert len(frontpack.fill(L_SHAPE, 0.1)) > 10  # a number: constant radius
+    closed = frontpack.fill(L_SHAPE, "constant:0.1", method="closed", start=(0.5, 0.5), window=0)
+    assert frontpack.certify(L_SHAPE, closed.disks)
+    assert (closed.disks[:, 2] == 0.1).all()
+    with pytest.raises(frontpack.OptionError, match="method 'spiral'"):
+        frontpack.fill(L_SHAPE, method="spiral")
+    with pytest.raises(frontpack.OptionError, match=r"rmin \(0.2\) must not exceed rmax \(0.1\)") as e:
+        frontpack.fill(L_SHAPE, "uniform:0.2,0.1")
+    assert isinstance(e.value, ValueError)
+    with pytest.raises(frontpack.LimitError) as e:
+        frontpack.fill(L_SHAPE, "constant:0.001", max_disks=1000)
+    assert e.value.estimate > 1000 and "max_disks" in str(e.value)
+    truncated = frontpack.fill(L_SHAPE, "constant:0.01", max_disks=100_000)
+    assert not truncated.truncated
+
+
+def test_radii_constructors():
+    assert frontpack.Radii.uniform(0.01, 0.05).describe() == frontpack.Radii("uniform:0.01,0.05").describe()
+    n = frontpack.Radii.normal(0.02, 0.004, 0.01, 0.03)
+    assert (n.min, n.max) == (0.01, 0.03)
+    s = n.sample(1000, seed=3)
+    assert s.shape == (1000,) and same_bits(s, n.sample(1000, seed=3))
+    assert ((s >= 0.01) & (s <= 0.03)).all()
+    d = frontpack.Radii.discrete([(1.0, 0.5), (2.0, 0.5)], kind="diameter")
+    assert set(d.sample(100).tolist()) == {0.5, 1.0}
+    g = frontpack.Radii.grading_curve([(0.1, 0.0), (0.2, 1.0)])
+    assert g.min == 0.05 and g.max == 0.1 and g.quantile(0.0) == 0.05
+    assert frontpack.Radii.lognormal(0.02, 1.5, 0.01, 0.04).cdf(0.04) == 1.0
+    with pytest.raises(frontpack.OptionError, match="basis 'mass'"):
+        frontpack.Radii.discrete([(1.0, 1.0)], basis="mass")
+
+
+def test_progress_callback_sees_both_phases():
+    seen = []
+    p = frontpack.fill(L_SHAPE, "constant:0.004", progress=seen.append)
+    phases = [s.phase for s in seen]
+    assert phases[0] == "generate" and phases[-1] == "certify"
+    assert phases == sorted(phases, key=("generate", "certify").index)
+    generate = [s for s in seen if s.phase == "generate"]
+    assert len(generate) >= 2 and generate[-1].fraction == 1.0
+    assert [s.disks for s in generate] == sorted(s.disks for s in generate)
+    assert seen[-1].fraction == 1.0 and not p.cancelled
+
+
+def test_progress_returning_false_stops_generating():
+    full = frontpack.fill(L_SHAPE, "constant:0.004")
+    p = frontpack.fill(L_SHAPE, "constant:0.004", progress=lambda s: s.disks < 16384)
+    assert p.cancelled and 0 < len(p) < len(full)
+    assert frontpack.certify(L_SHAPE, p.disks)  # what was generated, certified
+
+
+def test_exception_in_callback_cancels_and_propagates():
+    calls = []
+
+    def boom(progress):
+        calls.append(progress)
+        raise RuntimeError("stop here")
+
+    with pytest.raises(RuntimeError, match="stop here") as e:
+        frontpack.fill(L_SHAPE, "constant:0.004", progress=boom)
+    assert len(calls) == 1  # the run stopped at once: no further callback
+    if sys.version_info >= (3, 11):
+        assert e.value.__notes__ == ["frontpack.fill was cancelled after %d disks" % calls[0].disks]
+
+
+def test_sigint_from_callback_raises_keyboard_interrupt():
+    calls = []
+
+    def interrupt(progress):
+        calls.append(progress)
+        if len(calls) == 1:
+            os.kill(os.getpid(), signal.SIGINT)
+
+    with pytest.raises(KeyboardInterrupt) as e:
+        frontpack.fill(L_SHAPE, "constant:0.004", progress=interrupt)
+    assert len(calls) <= 2
+    if sys.version_info >= (3, 11):
+        assert e.value.__notes__[0].startswith("frontpack.fill was cancelled after ")
+
+
+def test_ctrl_c_without_callback_cancels_a_long_fill():
+    # About 4 million disks (several seconds): Ctrl-C 0.2 s in must end it with KeyboardInterrupt,
+    # raised from inside the run (the note says the run was cancelled; a run that finished first
+    # would get the interrupt only after returning, without the note).
+    timer = threading.Timer(0.2, os.kill, (os.getpid(), signal.SIGINT))
+    timer.start()
+    try:
+        with pytest.raises(KeyboardInterrupt) as e:
+            frontpack.fill("POLYGON((0 0,12 0,12 12,0 12,0 0))", "constant:0.003")
+    finally:
+        timer.cancel()
+    if sys.version_info >= (3, 11):
+        (note,) = e.value.__notes__
+        assert note.startswith("frontpack.fill was cancelled after ")
+        assert int(note.split()[-2]) < 3_000_000
+
+
+def test_stop_source_from_another_thread():
+    stop = frontpack.StopSource()
+    threading.Timer(0.1, stop.request_stop).start()
+    with pytest.raises(frontpack.CancelledError):
+        frontpack.fill("POLYGON((0 0,12 0,12 12,0 12,0 0))", "constant:0.003", stop=stop)
+    assert stop.stop_requested
+
+
+def test_gil_is_released_while_filling():
+    # Another thread counts while the fill runs; between two progress callbacks (thousands of
+    # disks) it must have counted, which it cannot while the fill holds the GIL.
+    counter = [0]
+    running = threading.Event()
+    running.set()
+
+    def count():
+        while running.is_set():
+            counter[0] += 1
+
+    thread = threading.Thread(target=count)
+    thread.start()
+    marks = []
+    try:
+        frontpack.fill("POLYGON((0 0,3 0,3 3,0 3,0 0))", "constant:0.004",
+                       progress=lambda s: marks.append(counter[0]) if s.phase == "generate" else None)
+    finally:
+        running.clear()
+        thread.join()
+    steps = np.diff(marks)
+    assert len(steps) >= 4
+    assert (steps > 0).sum() >= len(steps) - 1
+
+
+def test_progress_bar(capfd):
+    quiet = frontpack.fill(L_SHAPE, "constant:0.01", seed=3)
+    with_bar = frontpack.fill(L_SHAPE, "constant:0.01", seed=3, progress=True)
+    assert same_bits(quiet.disks, with_bar.disks)
+    assert "%" in capfd.readouterr().err
+    with pytest.raises(TypeError, match="progress must be"):
+        frontpack.fill(L_SHAPE, progress=3)
+
+
+def test_types_in_repr():
+    p = frontpack.fill(L_SHAPE, "constant:0.05")
+    assert repr(p).startswith("<frontpack.Packing %d disks, certified" % len(p))
+    assert "generated" in repr(p.certificate)
+    assert sys.getrefcount(p.disks) >= 2

@@ -1,0 +1,144 @@
+"""Writers and readers for every format (bit-exact round trips), pictures, types, decks, and
+certify()/measure() on arrays from elsewhere."""
+
+import math
+
+import numpy as np
+import pytest
+
+import frontpack
+from conftest import same_bits
+
+DOMAIN = "POLYGON((0 0,1 0,1 1,0 1,0 0),(0.3 0.3,0.3 0.5,0.5 0.5,0.5 0.3,0.3 0.3))"
+
+
+@pytest.fixture(scope="module")
+def packing():
+    p = frontpack.fill(DOMAIN, "lognormal:0.02,1.4", seed=11)
+    assert len(p) > 200
+    return p
+
+
+@pytest.mark.parametrize("extension,format", [
+    ("csv", "csv"), ("yade", "yade"), ("txt", "yade"), ("data", "lammps"), ("lmp", "lammps"), ("vtp", "vtp"),
+])
+def test_round_trip_is_bit_exact(tmp_path, packing, extension, format):
+    path = tmp_path / ("disks." + extension)
+    frontpack.write(path, DOMAIN, packing.disks)
+    assert same_bits(frontpack.read_disks(path), packing.disks)
+    assert same_bits(frontpack.read_disks(str(path), format), packing.disks)
+    assert path.read_text() == frontpack.dumps(DOMAIN, packing.disks, format)
+
+
+def test_round_trip_of_awkward_numbers(tmp_path):
+    disks = np.array([[0.1, 1 / 3, 5e-324], [-2.5e-300, 1e300, 0.30000000000000004], [-0.0, 7.0, 1.0]])
+    for name in ("a.csv", "a.yade", "a.vtp"):
+        frontpack.write(tmp_path / name, DOMAIN, disks)
+        assert same_bits(frontpack.read_disks(tmp_path / name), disks)
+
+
+def test_lammps_dump_reader(tmp_path):
+    dump = tmp_path / "run.lammpstrj"
+    snapshot = "ITEM: TIMESTEP\n{t}\nITEM: NUMBER OF ATOMS\n2\nITEM: BOX BOUNDS ff ff pp\n0 1\n0 1\n-1 1\n" \
+               "ITEM: ATOMS id type x y z radius\n2 1 0.75 0.5 0 0.125\n1 1 0.25 {y} 0 0.125\n"
+    dump.write_text(snapshot.format(t=0, y=0.5) + snapshot.format(t=100, y=0.625))
+    last = frontpack.read_disks(dump)
+    assert last.tolist() == [[0.25, 0.625, 0.125], [0.75, 0.5, 0.125]]
+    first = frontpack.read_disks(dump, "lammps-dump", timestep=0)
+    assert first[0].tolist() == [0.25, 0.5, 0.125]
+    with pytest.raises(frontpack.DiskFileError) as e:
+        frontpack.read_disks(dump, timestep=50)
+    assert e.value.kind == "missing_item"
+
+
+def test_types_are_carried(tmp_path, packing):
+    types = frontpack.assign_types("size:0.02", packing.disks)
+    assert types.dtype == np.uint32 and set(types.tolist()) == {1, 2}
+    assert (types == np.where(packing.disks[:, 2] >= 0.02, 2, 1)).all()
+    assert (frontpack.assign_types([0.02], packing.disks) == types).all()
+    text = frontpack.dumps(DOMAIN, packing.disks, "csv", types=types)
+    assert text.startswith("x,y,r,type\n")
+    assert text.splitlines()[1].endswith(",%d" % types[0])
+    data = frontpack.dumps(DOMAIN, packing.disks, "lammps", types=types, type_densities=[2500, 7800])
+    assert "2 atom types" in data
+    with pytest.raises(ValueError, match="types must be"):
+        frontpack.dumps(DOMAIN, packing.disks, "csv", types=[[1]])
+
+
+def test_svg_render(tmp_path, packing):
+    path = tmp_path / "p.svg"
+    frontpack.render(path, DOMAIN, packing.disks, width=300)
+    text = path.read_text()
+    assert "<svg" in text and text.count("<circle") == len(packing)
+    assert frontpack.dumps(DOMAIN, packing.disks, "svg", width=300) == text
+
+
+def test_writer_errors(tmp_path, packing):
+    with pytest.raises(frontpack.OptionError, match=r"\.png"):
+        frontpack.write(tmp_path / "p.png", DOMAIN, packing.disks)
+    target = tmp_path / "no" / "such" / "dir.csv"
+    with pytest.raises(frontpack.IoError) as e:
+        frontpack.write(target, DOMAIN, packing.disks)
+    assert e.value.path == str(target)
+    with pytest.raises(frontpack.OptionError):
+        frontpack.dumps(DOMAIN, packing.disks, "lammps", density=-1)
+
+
+def test_disk_file_error_fields(tmp_path):
+    bad = tmp_path / "bad.csv"
+    bad.write_text("x,y,r\n0.5,0.5,0.1\n0.5,abc,0.1\n")
+    with pytest.raises(frontpack.DiskFileError) as e:
+        frontpack.read_disks(bad)
+    err = e.value
+    assert isinstance(err, ValueError)
+    assert (err.kind, err.line, err.column) == ("bad_number", 3, 5)
+    assert err.source == str(bad) and str(err).startswith("%s:3:5: " % bad)
+
+
+def test_certify_finds_a_planted_overlap_and_a_disk_outside(packing):
+    disks = packing.disks.copy()
+    assert frontpack.certify(DOMAIN, disks).valid
+    x, y, r = disks[4]
+    disks[9] = (x + r, y, r)  # overlaps disk 4 (and maybe others)
+    disks[20] = (0.4, 0.4, 0.01)  # in the hole
+    report = frontpack.certify(DOMAIN, disks)
+    assert not report
+    assert report.overlapping.dtype == np.int64 and report.overlapping.shape[1] == 2
+    assert [4, 9] in report.overlapping.tolist()
+    assert (report.overlapping[:, 0] < report.overlapping[:, 1]).all()
+    assert 20 in report.outside.tolist() and report.outside.dtype == np.int64
+    assert report.deepest_overlap is not None and report.deepest_overlap_depth > 0
+    # touching is not overlapping: exactly tangent in binary (x + 2r exact)
+    tangent = np.array([[0.125, 0.125, 0.0625], [0.25, 0.125, 0.0625]])
+    assert frontpack.certify(DOMAIN, tangent).valid
+
+
+def test_certify_accepts_any_array_like():
+    assert frontpack.certify(DOMAIN, [[0.1, 0.1, 0.05]]).valid
+    assert frontpack.certify(DOMAIN, np.empty((0, 3))).valid
+    assert frontpack.certify(DOMAIN, []).valid
+    report = frontpack.certify(DOMAIN, np.array([[0.1, 0.1, np.nan]], dtype=np.float32))
+    assert report.outside.tolist() == [0]
+    with pytest.raises(ValueError, match=r"shape \(N, 3\), not \(2, 2\)"):
+        frontpack.certify(DOMAIN, [[1, 2], [3, 4]])
+
+
+def test_measure(packing):
+    s = frontpack.measure(DOMAIN, packing.disks, requested=frontpack.Radii("lognormal:0.02,1.4"), samples=20000)
+    disk_area = math.fsum(math.pi * r * r for r in packing.disks[:, 2])
+    assert s["disks"] == len(packing)
+    assert s["packing_fraction"] == pytest.approx(disk_area / 0.96, rel=1e-12)
+    assert 0.6 < s["packing_fraction"] < 0.9
+    assert s["overlaps"] == 0 and s["mean_coordination"] > 2
+    assert s["sizes"]["compared"] and s["sizes"]["ks_area"] < 0.2
+    assert len(s["holes"]) == 2 and s["largest_empty_circle"]["computed"]
+    with pytest.raises(ValueError, match="disk"):
+        frontpack.measure(DOMAIN, [[0.1, 0.1, -1.0]])
+
+
+def test_deck_and_wall_disks(packing):
+    walls = frontpack.wall_disks(DOMAIN, 0.01, 0.01)
+    assert walls.shape[1] == 3 and len(walls) > 100
+    assert not frontpack.as_domain(DOMAIN).contains(walls).any()
+    deck = frontpack.make_deck(DOMAIN, packing.disks, "lammps", densities=[2500])
+    assert "in.frontpack" in deck and "read_data" in deck["in.frontpack"]
