@@ -180,6 +180,13 @@ void bind_domain(py::module_& m) {
       .def("to_wkt", &Domain::to_wkt,
            "WKT with shortest round-trip numbers: Domain.from_wkt(d.to_wkt()) gives an identical domain.")
       .def_property_readonly("wkt", &Domain::to_wkt, "to_wkt(), as shapely names it.")
+      .def(py::pickle(  // by WKT (exact: shortest round-trip numbers) and the periodicity
+          [](const Domain& d) { return py::make_tuple(d.to_wkt(), to_string(d.periodicity())); },
+          [](const py::tuple& state) {
+            const Domain d = Domain::from_wkt(state[0].cast<std::string>());
+            const auto axes = state[1].cast<std::string>();
+            return axes == to_string(Periodicity::none) ? d : Domain::periodic(d.bbox(), periodicity_from(axes));
+          }))
       .def("__repr__", [](const Domain& d) {
         return "<frontpack.Domain " + std::to_string(d.num_polygons()) + " polygon(s), " +
                std::to_string(d.num_holes()) + " hole(s), area " + py::repr(py::float_(d.area())).cast<std::string>() +

@@ -1,5 +1,7 @@
 """frontpack.Domain: constructors from WKT, files, arrays and shapely; exact queries."""
 
+import pickle
+
 import numpy as np
 import pytest
 
@@ -145,3 +147,12 @@ def test_domain_file_error_fields(test_data):
     assert err.kind == "open_contour"
     assert err.source.endswith("open_chain.dxf") and "line" in err.entity
     assert str(err) == "%s: %s: %s" % (err.source, err.entity, err.detail)
+
+
+def test_pickle_round_trip():
+    d = frontpack.Domain.from_wkt("POLYGON((0 0,1 0,1 1,0 1,0 0),(0.1 0.1,0.1 0.2,0.3 0.1,0.1 0.1))")
+    back = pickle.loads(pickle.dumps(d))
+    assert back.to_wkt() == d.to_wkt() and back.area == d.area
+    cell = frontpack.Domain.periodic((0.1, -1, 2.3, 1), "x")
+    back = pickle.loads(pickle.dumps(cell))
+    assert back.periodicity == "x" and back.bbox == cell.bbox == (0.1, -1.0, 2.3, 1.0)

@@ -5,6 +5,7 @@ import signal
 import subprocess
 import sys
 import threading
+import time
 
 import numpy as np
 import pytest
@@ -170,8 +171,10 @@ def test_stop_source_from_another_thread():
 
 
 def test_gil_is_released_while_filling():
-    # Another thread counts while the fill runs; between two progress callbacks (thousands of
-    # disks) it must have counted, which it cannot while the fill holds the GIL.
+    # Another thread counts while the fill runs, giving the GIL up at every step (sleep(0)); the
+    # switch interval is made long, so that nothing takes the GIL from a thread that holds it.
+    # Between two progress callbacks (thousands of disks) the counter must have moved, which it
+    # cannot while the fill holds the GIL.
     counter = [0]
     running = threading.Event()
     running.set()
@@ -179,7 +182,10 @@ def test_gil_is_released_while_filling():
     def count():
         while running.is_set():
             counter[0] += 1
+            time.sleep(0)
 
+    interval = sys.getswitchinterval()
+    sys.setswitchinterval(30.0)
     thread = threading.Thread(target=count)
     thread.start()
     marks = []
@@ -189,9 +195,10 @@ def test_gil_is_released_while_filling():
     finally:
         running.clear()
         thread.join()
+        sys.setswitchinterval(interval)
     steps = np.diff(marks)
     assert len(steps) >= 4
-    assert (steps > 0).sum() >= len(steps) - 1
+    assert (steps > 0).sum() >= len(steps) - 1, steps
 
 
 def test_progress_bar(capfd):
