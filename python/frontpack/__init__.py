@@ -58,6 +58,9 @@ def fill(
     fill_voids=True,
     max_disks=50_000_000,
     memory_limit=0,
+    fraction=None,
+    count=0,
+    height=None,
     progress=None,
     stop=None,
 ):
@@ -73,6 +76,12 @@ def fill(
     `max_disks`, `memory_limit` (bytes; 0: three quarters of the machine's memory): requests
     beyond them raise LimitError up front; a run reaching max_disks stops (Packing.truncated).
 
+    Targets (Packing.target reports what was achieved): `fraction`, a packing fraction F in
+    (0, 1) reached within 0.002 with the requested radii exactly (a looser fill shrunk back and
+    thinned; no contacts; two or three fills; docs/fraction.md); `count`, exactly this many disks
+    in a compact region (closed and open forms); `height`, only the part below y = height is
+    filled (every disk has y + r <= height).
+
     `progress`: a callable taking a Progress, called about every 16384 disks and at each phase
     (returning False stops generating: the packing of what was generated, certified, with
     Packing.cancelled), or True for a bar (tqdm when importable). The GIL is released while the
@@ -86,7 +95,8 @@ def fill(
     callback, close = _progress.callback(progress)
     try:
         return _core._fill(
-            d, radius, method, seed, window, start, clearance, fill_voids, max_disks, memory_limit, callback, stop
+            d, radius, method, seed, window, start, clearance, fill_voids, max_disks, memory_limit, fraction, count,
+            height, callback, stop,
         )
     finally:
         close()

@@ -183,6 +183,7 @@ class Packing:
     stats: FillStats
     truncated: bool
     cancelled: bool
+    target: Optional[dict[str, Any]]
     def __len__(self) -> int: ...
 
 def fill(
@@ -197,6 +198,9 @@ def fill(
     fill_voids: bool = True,
     max_disks: int = 50_000_000,
     memory_limit: int = 0,
+    fraction: Optional[float] = None,
+    count: int = 0,
+    height: Optional[float] = None,
     progress: Union[None, bool, Callable[[Progress], Optional[bool]]] = None,
     stop: Optional[StopSource] = None,
 ) -> Packing: ...

@@ -25,7 +25,26 @@ struct PyPacking {
   FillStats stats;
   bool truncated = false;
   bool cancelled = false;
+  py::object target = py::none();  // a dict of TargetReport, or None
 };
+
+py::object target_dict(const std::optional<TargetReport>& t) {
+  if (!t) {
+    return py::none();
+  }
+  py::dict d;
+  d["fraction_requested"] = t->fraction_requested;
+  d["fraction_achieved"] = t->fraction_achieved;
+  d["fraction_dense"] = t->fraction_dense;
+  d["scale"] = t->scale;
+  d["removed"] = t->removed;
+  d["fills"] = t->fills;
+  d["count_requested"] = t->count_requested;
+  d["height"] = t->height ? py::object(py::float_(*t->height)) : py::object(py::none());
+  d["area_filled"] = t->area_filled;
+  d["outside_original"] = t->outside_original;
+  return d;
+}
 
 // A std::stop_source Python can hold and request from another thread.
 struct StopSource {
@@ -108,8 +127,12 @@ PyPacking run(const Domain& domain, FillOptions options, const py::object& progr
   if (pending) {
     throw *pending;  // Ctrl-C (or the callback's exception) after the last cancellable point
   }
-  return PyPacking{disks_array(std::move(packing.disks)), packing.certificate, packing.stats, packing.truncated,
-                   packing.cancelled};
+  return PyPacking{disks_array(std::move(packing.disks)),
+                   packing.certificate,
+                   packing.stats,
+                   packing.truncated,
+                   packing.cancelled,
+                   target_dict(packing.target)};
 }
 
 }  // namespace
@@ -158,6 +181,10 @@ void bind_fill(py::module_& m) {
       .def_readonly("stats", &PyPacking::stats)
       .def_readonly("truncated", &PyPacking::truncated, "max_disks was reached.")
       .def_readonly("cancelled", &PyPacking::cancelled, "The progress callback returned False.")
+      .def_readonly("target", &PyPacking::target,
+                    "With fraction, count or height: what was achieved (TargetReport as a dict: fraction_requested, "
+                    "fraction_achieved, fraction_dense, scale, removed, fills, count_requested, height, area_filled, "
+                    "outside_original); else None.")
       .def("__len__", [](const PyPacking& p) { return p.disks.shape(0); })
       .def("__repr__", [](const PyPacking& p) {
         return "<frontpack.Packing " + std::to_string(p.disks.shape(0)) + " disks, certified (" +
@@ -169,7 +196,8 @@ void bind_fill(py::module_& m) {
       "_fill",
       [](const Domain& domain, const py::handle& radius, const std::string& method, std::uint64_t seed,
          std::size_t window, const std::optional<std::pair<double, double>>& start, double clearance, bool fill_voids,
-         std::size_t max_disks, std::size_t memory_limit, const py::object& progress, const py::object& stop) {
+         std::size_t max_disks, std::size_t memory_limit, std::optional<double> fraction, std::size_t count,
+         std::optional<double> height, const py::object& progress, const py::object& stop) {
         FillOptions o;
         o.method = method_from(method);
         o.radii = radii_from(radius);
@@ -182,11 +210,15 @@ void bind_fill(py::module_& m) {
         o.fill_voids = fill_voids;
         o.max_disks = max_disks;
         o.memory_limit = memory_limit;
+        o.fraction = fraction;
+        o.count = count;
+        o.height = height;
         return run(domain, std::move(o), progress, stop);
       },
       py::arg("domain"), py::arg("radius"), py::arg("method"), py::arg("seed"), py::arg("window"), py::arg("start"),
-      py::arg("clearance"), py::arg("fill_voids"), py::arg("max_disks"), py::arg("memory_limit"), py::arg("progress"),
-      py::arg("stop"), "fill() without the shape conversion and the progress bar.");
+      py::arg("clearance"), py::arg("fill_voids"), py::arg("max_disks"), py::arg("memory_limit"), py::arg("fraction"),
+      py::arg("count"), py::arg("height"), py::arg("progress"), py::arg("stop"),
+      "fill() without the shape conversion and the progress bar.");
 
   // For bench/python_overhead.py: frontpack::fill alone (no callback), timed in C++.
   m.def(

@@ -215,3 +215,20 @@ def test_types_in_repr():
     assert repr(p).startswith("<frontpack.Packing %d disks, certified" % len(p))
     assert "generated" in repr(p.certificate)
     assert sys.getrefcount(p.disks) >= 2
+
+
+def test_targets_fraction_count_height():
+    square = "POLYGON((0 0,1 0,1 1,0 1,0 0))"
+    assert frontpack.fill(square, "constant:0.05").target is None
+    loose = frontpack.fill(square, "uniform:0.01,0.03", seed=4, fraction=0.6)
+    area = float(np.sum(np.pi * loose.disks[:, 2] ** 2))
+    assert abs(area - 0.6) <= 0.002 and loose.target["fraction_requested"] == 0.6
+    assert loose.target["fraction_achieved"] == pytest.approx(area, rel=1e-12)
+    assert frontpack.certify(square, loose.disks)
+    counted = frontpack.fill(square, "constant:0.02", method="closed", count=300)
+    assert len(counted) == 300 and counted.target["count_requested"] == 300
+    low = frontpack.fill(square, "uniform:0.01,0.03", seed=4, height=0.5)
+    assert (low.disks[:, 1] + low.disks[:, 2] <= 0.5).all() and low.target["height"] == 0.5
+    assert low.target["area_filled"] == 0.5
+    with pytest.raises(frontpack.OptionError):
+        frontpack.fill(square, "constant:0.02", count=300)  # the boundary method takes no count
