@@ -3,7 +3,9 @@ bench/fill_bench.cpp (radii uniform in [5e-4, 5e-3] in a 6 x 6 square, seed 2003
 frontpack.fill() from Python (argument conversion, the progress trampoline that checks for
 Ctrl-C, the array made from the library's vector) against frontpack::fill() called from C++ in
 the same process (frontpack._core._time_cpp_fill, timed in C++ with the GIL released). Runs
-alternate; the minimum of each is compared (the least disturbed run).
+alternate; reported: the minimum of each (the least disturbed runs) and the median of the paired
+differences (each Python run against the C++ run just before it), so that a busy machine's drift
+cancels.
 
     PYTHONPATH=build/release/python /usr/bin/python3 bench/python_overhead.py [REPEATS] [METHOD]
 """
@@ -34,4 +36,4 @@ print(f"{method}, {disks} disks, {repeats} runs each")
 print(f"C++ fill:    min {min(cpp):.3f} s, median {statistics.median(cpp):.3f} s")
 print(f"Python fill: min {min(python):.3f} s, median {statistics.median(python):.3f} s")
 print(f"overhead:    {100 * (min(python) - min(cpp)) / min(cpp):+.2f}% (min), "
-      f"{100 * (statistics.median(python) - statistics.median(cpp)) / statistics.median(cpp):+.2f}% (median)")
+      f"{100 * statistics.median((p - c) / c for p, c in zip(python, cpp)):+.2f}% (median of the paired runs)")
