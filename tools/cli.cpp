@@ -1,6 +1,8 @@
 #include "cli.hpp"
 
+#include <algorithm>
 #include <charconv>
+#include <cmath>
 #include <filesystem>
 #include <string_view>
 #include <system_error>
@@ -58,6 +60,63 @@ void add_domain_options(CLI::App& cmd, DomainSource& src) {
   src.wkt_option->excludes(file);
 }
 
+void add_periodic_options(CLI::App& cmd, DomainSource& src) {
+  src.periodic_option = cmd.add_option(
+      "--periodic", src.periodic,
+      "a periodic cell instead of a DOMAIN file: LX,LY (the cell [0,LX) x [0,LY)) or XMIN,YMIN,XMAX,YMAX");
+  cmd.add_option("--periodic-axes", src.periodic_axes,
+                 "with --periodic: xy (periodic in x and y) or x (periodic in x, walls at the bottom and top)")
+      ->capture_default_str()
+      ->needs(src.periodic_option);
+  if (src.wkt_option != nullptr) {
+    src.periodic_option->excludes(src.wkt_option);
+    src.wkt_option->excludes(src.periodic_option);
+  }
+}
+
+frontpack::Domain periodic_domain(const std::string& text, const std::string& axes) {
+  frontpack::Periodicity periodicity = frontpack::Periodicity::none;
+  if (axes == "xy") {
+    periodicity = frontpack::Periodicity::xy;
+  } else if (axes == "x") {
+    periodicity = frontpack::Periodicity::x;
+  } else {
+    throw frontpack::OptionError("--periodic-axes '" + axes.substr(0, 40) + "': expected xy or x");
+  }
+  const std::string given = "--periodic '" + (text.size() > 80 ? text.substr(0, 80) + "..." : text) + "'";
+  std::vector<double> values;
+  std::size_t begin = 0;
+  while (true) {
+    const std::size_t comma = std::min(text.find(',', begin), text.size());
+    const std::string_view item = std::string_view(text).substr(begin, comma - begin);
+    double value = 0;
+    const auto [end, ec] = std::from_chars(item.data(), item.data() + item.size(), value);
+    if (item.empty() || ec != std::errc{} || end != item.data() + item.size() || !std::isfinite(value)) {
+      throw frontpack::OptionError(given + ": '" + std::string(item.substr(0, 40)) +
+                                   "' is not a finite number; expected LX,LY or XMIN,YMIN,XMAX,YMAX");
+    }
+    values.push_back(value);
+    if (comma == text.size()) {
+      break;
+    }
+    begin = comma + 1;
+  }
+  frontpack::Box cell;
+  if (values.size() == 2) {
+    cell = frontpack::Box{0, 0, values[0], values[1]};
+  } else if (values.size() == 4) {
+    cell = frontpack::Box{values[0], values[1], values[2], values[3]};
+  } else {
+    throw frontpack::OptionError(given + ": " + std::to_string(values.size()) +
+                                 " numbers; expected LX,LY or XMIN,YMIN,XMAX,YMAX");
+  }
+  try {
+    return frontpack::Domain::periodic(cell, periodicity);
+  } catch (const frontpack::InvalidDomainError& e) {
+    throw frontpack::OptionError(given + ": " + e.what());
+  }
+}
+
 frontpack::Domain load(const DomainSource& src) {
   return load_file(src).domain;
 }
@@ -76,6 +135,13 @@ frontpack::DomainFile load_file(const DomainSource& src, double default_deviatio
             .ignored_entities = 0,
             .curves = {}};
   }
+  if (src.from_periodic()) {
+    return {.domain = periodic_domain(src.periodic, src.periodic_axes),
+            .format = frontpack::DomainFormat::wkt,
+            .contours = 0,
+            .ignored_entities = 0,
+            .curves = {}};
+  }
   if (src.file.empty()) {
     throw CLI::RequiredError("DOMAIN or --wkt");
   }
@@ -83,7 +149,7 @@ frontpack::DomainFile load_file(const DomainSource& src, double default_deviatio
 }
 
 std::vector<frontpack_tool::FileUse> domain_inputs(const DomainSource& src) {
-  if (src.from_text() || src.file.empty()) {
+  if (src.from_option() || src.file.empty()) {
     return {};
   }
   return {{"DOMAIN", src.file}};

@@ -58,11 +58,19 @@ void set_signal_watch(SignalWatch* watch);
 struct DomainSource {
   std::string file;
   std::string wkt;
-  std::string format;         // --domain-format: "" (by extension), wkt, dxf, geojson, shapefile
-  std::string max_deviation;  // --max-deviation: "" for the command's default
+  std::string format;                // --domain-format: "" (by extension), wkt, dxf, geojson, shapefile
+  std::string max_deviation;         // --max-deviation: "" for the command's default
+  std::string periodic;              // --periodic LX,LY | XMIN,YMIN,XMAX,YMAX
+  std::string periodic_axes = "xy";  // --periodic-axes xy | x
   CLI::Option* wkt_option = nullptr;
+  CLI::Option* periodic_option = nullptr;
   [[nodiscard]] bool from_text() const { return wkt_option != nullptr && wkt_option->count() > 0; }
-  [[nodiscard]] std::string name() const { return from_text() ? std::string("--wkt") : file; }
+  [[nodiscard]] bool from_periodic() const { return periodic_option != nullptr && periodic_option->count() > 0; }
+  /// Whether the domain comes from an option (--wkt, --periodic) rather than a DOMAIN file.
+  [[nodiscard]] bool from_option() const { return from_text() || from_periodic(); }
+  [[nodiscard]] std::string name() const {
+    return from_text() ? std::string("--wkt") : from_periodic() ? "--periodic " + periodic : file;
+  }
 };
 
 constexpr const char* kDomainFileHelp =
@@ -74,6 +82,16 @@ constexpr const char* kDomainFileHelp =
 void add_domain_options(CLI::App& cmd, DomainSource& src);
 /// The same without the DOMAIN positional (for commands that take more positionals).
 void add_domain_source_options(CLI::App& cmd, DomainSource& src);
+/// --periodic and --periodic-axes (excluding --wkt when that is registered first): the domain is a
+/// periodic cell, periodic_domain(src.periodic, src.periodic_axes).
+void add_periodic_options(CLI::App& cmd, DomainSource& src);
+
+/// The periodic cell of `--periodic TEXT --periodic-axes AXES`: TEXT is "LX,LY" (the cell
+/// [0, LX) x [0, LY)) or "XMIN,YMIN,XMAX,YMAX"; numbers as std::from_chars reads them, finite;
+/// AXES is "xy" (a torus) or "x" (periodic in x, walls at the bottom and top). Throws OptionError
+/// naming the option and the value (an empty cell included).
+[[nodiscard]] frontpack::Domain periodic_domain(const std::string& text, const std::string& axes);
+
 /// The domain given; throws as Domain::from_wkt or read_domain_file, or CLI::RequiredError if
 /// none is. Curves get --max-deviation, else `default_deviation` (0: the library's relative one).
 [[nodiscard]] frontpack::DomainFile load_file(const DomainSource& src, double default_deviation = 0);

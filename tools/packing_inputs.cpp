@@ -15,11 +15,12 @@ frontpack::DiskFormat format_of(const PackingInputs& in) {
 }  // namespace
 
 void add_packing_inputs(CLI::App& cmd, PackingInputs& in) {
-  cmd.add_option("DOMAIN", in.domain.file, std::string(kDomainFileHelp) + " (omit it with --wkt)");
+  cmd.add_option("DOMAIN", in.domain.file, std::string(kDomainFileHelp) + " (omit it with --wkt or --periodic)");
   cmd.add_option("DISKS", in.disks,
                  "disk file: .csv (x,y,r), .txt/.yade (Yade x y z r), .data/.lmp (LAMMPS data, atom_style sphere), "
                  ".dump/.lammpstrj (LAMMPS dump with id x y radius), .vtp (VTK PolyData)");
   add_domain_source_options(cmd, in.domain);
+  add_periodic_options(cmd, in.domain);
   cmd.add_option("--disks-format", in.disks_format,
                  "read DISKS as csv, yade, lammps, lammps-dump or vtp instead of by its extension");
   cmd.add_option("--timestep", in.timestep, "LAMMPS dump: the snapshot of this timestep (default: the last)");
@@ -28,16 +29,17 @@ void add_packing_inputs(CLI::App& cmd, PackingInputs& in) {
 }
 
 void resolve(PackingInputs& in) {
-  if (in.domain.from_text()) {
+  if (in.domain.from_option()) {
     if (!in.disks.empty()) {
-      throw UsageError("with --wkt, give only DISKS (got '" + in.domain.file + "' and '" + in.disks + "')");
+      throw UsageError(std::string("with ") + (in.domain.from_text() ? "--wkt" : "--periodic") +
+                       ", give only DISKS (got '" + in.domain.file + "' and '" + in.disks + "')");
     }
     in.disks = in.domain.file;
     in.domain.file.clear();
   }
   if (in.disks.empty()) {
-    throw CLI::RequiredError(in.domain.from_text() || !in.domain.file.empty() ? "DISKS"
-                                                                              : "DOMAIN (or --wkt) and DISKS");
+    throw CLI::RequiredError(
+        in.domain.from_option() || !in.domain.file.empty() ? "DISKS" : "DOMAIN (or --wkt, --periodic) and DISKS");
   }
   (void)format_of(in);
   if (!in.timestep.empty()) {

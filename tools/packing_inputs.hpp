@@ -1,5 +1,5 @@
 // The inputs of the commands that read a packing (check, stats, render): the domain, as a DOMAIN
-// file or --wkt TEXT, and a disk file DISKS in any format the library reads.
+// file, --wkt TEXT or a periodic cell (--periodic), and a disk file DISKS in any format the library reads.
 #pragma once
 
 #include <CLI/CLI.hpp>
@@ -21,11 +21,11 @@ struct PackingInputs {
   std::string radius_array;  ///< --radius-array (VTK PolyData); empty: the library's default names
 };
 
-/// DOMAIN and DISKS (positional), --wkt TEXT (then the one positional is DISKS), --disks-format,
-/// --timestep, --radius-array.
+/// DOMAIN and DISKS (positional), --wkt TEXT or --periodic CELL [--periodic-axes xy|x] (then the
+/// one positional is DISKS), --disks-format, --timestep, --radius-array.
 void add_packing_inputs(CLI::App& cmd, PackingInputs& in);
 
-/// After parsing: with --wkt, the one positional given is DISKS. Throws UsageError or
+/// After parsing: with --wkt or --periodic, the one positional given is DISKS. Throws UsageError or
 /// CLI::RequiredError when the files given do not fit, OptionError for a bad option value.
 void resolve(PackingInputs& in);
 

@@ -32,8 +32,10 @@ struct Certificate {
 /// What certify() found about an arbitrary set of disks.
 struct CertifyReport {
   Certificate certificate;
-  std::vector<std::size_t> outside;                              ///< indices of disks not inside
-  std::vector<std::pair<std::size_t, std::size_t>> overlapping;  ///< index pairs (i < j), sorted
+  std::vector<std::size_t> outside;  ///< indices of disks not inside
+  /// Index pairs (i < j), sorted; in a periodic cell also (i, i) for a disk that overlaps its own
+  /// image (its diameter exceeds a period).
+  std::vector<std::pair<std::size_t, std::size_t>> overlapping;
   /// How bad it is, for reports. Which disks are outside and which pairs overlap is decided
   /// exactly; these figures are computed in floating point from those decisions (approximate).
   /// The pair of `overlapping` with the deepest overlap r_i + r_j - |c_i - c_j| (none if empty).
@@ -49,6 +51,15 @@ struct CertifyReport {
 /// domain, and which pairs overlap (interiors intersect; touching is fine). Disks with a
 /// negative, NaN or infinite radius or centre are "outside". Pairs among outside disks are
 /// reported too. Throws CancelledError once `stop` is requested.
+///
+/// A periodic cell (Domain::periodic): "inside" is Domain::contains (the centre in the half-open
+/// cell; with Periodicity::x the disk between the walls), and (i, j) overlap when disk i overlaps
+/// an image of disk j, j translated by whole periods (kx (xmax - xmin), ky (ymax - ymin)), the
+/// periods taken exactly; every image is considered, whatever the radii (a disk wider than the
+/// cell meets its own image: the pair (i, i)). Centres outside the cell (a simulation's unwrapped
+/// dump) are wrapped by whole periods for the search and the exact test uses the total shift; they
+/// are also reported outside. A disk more than 2^50 periods away takes part in no pair.
+/// deepest_overlap uses the nearest image.
 [[nodiscard]] CertifyReport certify(const Domain& domain, std::span<const Disk> disks, std::stop_token stop = {});
 
 }  // namespace frontpack

@@ -69,6 +69,12 @@ struct LammpsOptions {
   std::vector<double> type_densities{};
   /// With per-disk types: the "N atom types" of the header, >= the largest type (0: the largest type).
   std::int64_t atom_types = 0;
+  /// Periodicity::x or xy: the box is a periodic cell (Domain::periodic). On a periodic axis a
+  /// disk's centre must lie in the half-open box (xmin <= x < xmax) and the disk may reach across
+  /// the side; on a walled axis it lies in the closed box as without periodicity. The title line
+  /// names the `boundary` command the cell needs (p p p, or p f p for Periodicity::x): a data file
+  /// cannot carry it.
+  Periodicity periodicity = Periodicity::none;
 };
 
 /// Options of write() and write_file(), per format.
@@ -123,10 +129,9 @@ inline void write_yade(std::ostream& out, std::span<const Disk> disks, std::stop
 ///     id type diameter density x y z     (one line per disk: id = index + 1, diameter = 2 r, z = 0)
 ///
 /// 2 r is exact in binary, so r = diameter / 2 reads back exactly. Throws OptionError if the box
-/// does not contain every disk fully (decided exactly: x - r >= xmin and x + r <= xmax in floating
-/// point are exact tests, because rounding is monotone and the bounds are doubles), or if an option
-/// is out of range.
-/// With types (one per disk, else OptionError), each atom's type and its type's density.
+/// does not contain every disk fully (a periodic cell: LammpsOptions::periodicity) (decided exactly: x - r >= xmin and
+/// x + r <= xmax in floating point are exact tests, because rounding is monotone and the bounds are doubles), or if an
+/// option is out of range. With types (one per disk, else OptionError), each atom's type and its type's density.
 void write_lammps(std::ostream& out, std::span<const Disk> disks, std::span<const std::uint32_t> types, const Box& box,
                   const LammpsOptions& options = {}, std::stop_token stop = {});
 inline void write_lammps(std::ostream& out, std::span<const Disk> disks, const Box& box,
@@ -144,9 +149,15 @@ void write_vtp(std::ostream& out, std::span<const Disk> disks, std::span<const s
 inline void write_vtp(std::ostream& out, std::span<const Disk> disks, std::stop_token stop = {}) {
   write_vtp(out, disks, std::span<const std::uint32_t>{}, std::move(stop));
 }
+/// As write_vtp() above; for a periodic domain (Domain::periodic) the PolyData also carries field
+/// data `periodic_cell` (Float64, 4 components: xmin ymin xmax ymax) and `periodic_axes` (Int32:
+/// 1 for Periodicity::x, 2 for xy), shown by ParaView's Information panel and spreadsheet view.
+void write_vtp(std::ostream& out, const Domain& domain, std::span<const Disk> disks,
+               std::span<const std::uint32_t> types, std::stop_token stop = {});
 
-/// Writes `disks` (and, for SVG, the domain; for LAMMPS, the domain's bounding box as the box) to
-/// `out` in `format`, with the writer of that format.
+/// Writes `disks` (and, for SVG, the domain; for LAMMPS, the domain's bounding box as the box, a
+/// periodic domain's cell with its periodicity; for VTP, a periodic domain's cell) to `out` in
+/// `format`, with the writer of that format.
 void write(std::ostream& out, Format format, const Domain& domain, std::span<const Disk> disks,
            const WriteOptions& options = {});
 

@@ -8,6 +8,7 @@
 
 #include "certify/cull.hpp"
 #include "certify/overlap_pass.hpp"
+#include "certify/periodic_pass.hpp"
 #include "certify/report.hpp"
 #include "frontpack/certify.hpp"
 
@@ -19,6 +20,16 @@ namespace {
 
 double seconds_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+// The overlap pass the domain needs: across the images in a periodic cell.
+void pairs_for(const Domain& domain, std::span<const Disk> disks, std::vector<std::pair<std::size_t, std::size_t>>& out,
+               std::size_t& candidates, const std::stop_token& stop) {
+  if (domain.periodicity() != Periodicity::none) {
+    periodic_overlapping_pairs(domain, disks, out, candidates, stop);
+  } else {
+    overlapping_pairs(disks, out, candidates, stop);
+  }
 }
 
 }  // namespace
@@ -39,7 +50,7 @@ Certificate certify_fill(const Domain& domain, std::vector<Disk>& disks, std::sp
 
   // Drop the later disk of every overlapping pair, in the order of the sorted pairs: deterministic.
   std::vector<std::pair<std::size_t, std::size_t>> pairs;
-  overlapping_pairs(disks, pairs, certificate.candidate_pairs, stop);
+  pairs_for(domain, disks, pairs, certificate.candidate_pairs, stop);
   certificate.dropped = drop_one_of_each_pair(disks, pairs);
   // The capacity reserved beyond the disks generated was never touched and, in a block of its
   // own mapping (above malloc's mmap threshold, at most 32 MiB), costs no memory; a smaller block
@@ -65,7 +76,7 @@ CertifyReport certify(const Domain& domain, std::span<const Disk> disks, std::st
       report.outside.push_back(i);
     }
   }
-  detail::overlapping_pairs(disks, report.overlapping, report.certificate.candidate_pairs, stop);
+  detail::pairs_for(domain, disks, report.overlapping, report.certificate.candidate_pairs, stop);
   report.certificate.generated = disks.size();
   report.certificate.culled = report.outside.size();
   report.certificate.exact = true;

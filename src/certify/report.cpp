@@ -5,11 +5,40 @@
 #include <CGAL/AABB_tree.h>
 #include <CGAL/Simple_cartesian.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <vector>
 
+#include "certify/periodic_pass.hpp"
+
 namespace frontpack::detail {
+
+namespace {
+
+// A periodic cell's outside disks: how far the centre lies outside the cell (a periodic side is no
+// boundary, so a centre outside the cell reaches r + that distance out), and for a shear cell how
+// far the disk reaches past a wall.
+void measure_outside_cell(const Domain& domain, std::span<const Disk> disks, CertifyReport& report) {
+  const Box cell = domain.bbox();
+  const bool walls = domain.periodicity() == Periodicity::x;
+  for (const std::size_t i : report.outside) {
+    const Disk& d = disks[i];
+    double by = std::numeric_limits<double>::infinity();
+    if (std::isfinite(d.centre.x) && std::isfinite(d.centre.y) && std::isfinite(d.radius) && d.radius >= 0) {
+      const double dx = std::max({cell.xmin - d.centre.x, d.centre.x - cell.xmax, 0.0});
+      const double dy = std::max({cell.ymin - d.centre.y, d.centre.y - cell.ymax, 0.0});
+      const double out = std::hypot(dx, dy);
+      by = out > 0 || !walls ? d.radius + out : d.radius - std::min(d.centre.y - cell.ymin, cell.ymax - d.centre.y);
+    }
+    if (!report.farthest_outside || by > report.farthest_outside_by) {
+      report.farthest_outside = i;
+      report.farthest_outside_by = by;
+    }
+  }
+}
+
+}  // namespace
 
 // The "how bad" figures of a report, in floating point from the exact decisions. The distance
 // from a centre to the boundary comes from an AABB tree of the domain's edges (CGAL 5.5's tree is
@@ -22,13 +51,19 @@ void measure_worst(const Domain& domain, std::span<const Disk> disks, CertifyRep
   for (const auto& [i, j] : report.overlapping) {
     const Disk& a = disks[i];
     const Disk& b = disks[j];
-    const double depth = a.radius + b.radius - std::hypot(a.centre.x - b.centre.x, a.centre.y - b.centre.y);
+    const double depth = domain.periodicity() != Periodicity::none
+                             ? periodic_overlap_depth(domain, a, b, i == j)
+                             : a.radius + b.radius - std::hypot(a.centre.x - b.centre.x, a.centre.y - b.centre.y);
     if (!report.deepest_overlap || depth > report.deepest_overlap_depth) {
       report.deepest_overlap = std::make_pair(i, j);
       report.deepest_overlap_depth = depth;
     }
   }
   if (report.outside.empty()) {
+    return;
+  }
+  if (domain.periodicity() != Periodicity::none) {
+    measure_outside_cell(domain, disks, report);
     return;
   }
   using K = CGAL::Simple_cartesian<double>;

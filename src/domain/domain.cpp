@@ -13,6 +13,7 @@
 #include "common/format.hpp"
 #include "common/read_file.hpp"
 #include "domain/edge_grid.hpp"
+#include "domain/periodic_cell.hpp"
 #include "domain/ring_set.hpp"
 #include "domain/wkt_reader.hpp"
 
@@ -28,6 +29,7 @@ struct Domain::Impl {
   double perimeter = 0.0;
   double max_abs = 0.0;
   Periodicity periodicity = Periodicity::none;
+  Box cell;  // the periodic cell (periodicity != none)
 
   Impl() = default;
   Impl(const Impl&) = delete;
@@ -177,6 +179,7 @@ Domain Domain::periodic(const Box& cell, Periodicity axes) {
       Ring{{cell.xmin, cell.ymin}, {cell.xmax, cell.ymin}, {cell.xmax, cell.ymax}, {cell.xmin, cell.ymax}});
   std::shared_ptr<Impl> impl = build(parts, false, {});
   impl->periodicity = axes;
+  impl->cell = cell;
   return Domain(std::move(impl));
 }
 
@@ -217,10 +220,16 @@ Box Domain::bbox(std::size_t polygon) const {
 }
 
 Location Domain::locate(Point p) const noexcept {
+  if (impl_->periodicity != Periodicity::none) {
+    return detail::locate_in_cell(impl_->cell, impl_->periodicity, p);
+  }
   return impl_->grid.locate(p);
 }
 
 bool Domain::contains(const Disk& disk) const noexcept {
+  if (impl_->periodicity != Periodicity::none) {
+    return detail::cell_contains(impl_->cell, impl_->periodicity, disk);
+  }
   return impl_->grid.contains(disk);
 }
 
@@ -228,6 +237,12 @@ void Domain::contains(std::span<const Disk> disks, std::span<std::uint8_t> out) 
   if (disks.size() != out.size()) {
     throw std::invalid_argument("frontpack::Domain::contains: " + std::to_string(disks.size()) + " disks but " +
                                 std::to_string(out.size()) + " results");
+  }
+  if (impl_->periodicity != Periodicity::none) {
+    for (std::size_t i = 0; i < disks.size(); ++i) {
+      out[i] = detail::cell_contains(impl_->cell, impl_->periodicity, disks[i]) ? 1 : 0;
+    }
+    return;
   }
   for (std::size_t i = 0; i < disks.size(); ++i) {
     out[i] = impl_->grid.contains(disks[i]) ? 1 : 0;

@@ -192,17 +192,23 @@ void write_lammps(std::ostream& out, std::span<const Disk> disks, std::span<cons
       !std::isfinite(box.ymax)) {
     throw OptionError("LAMMPS box must be finite and non-empty");
   }
+  const bool wraps_x = options.periodicity != Periodicity::none;
+  const bool wraps_y = options.periodicity == Periodicity::xy;
   double rmax = 0;
   for (std::size_t i = 0; i < disks.size(); ++i) {
     const Disk& d = disks[i];
     // Rounding is monotone and the bounds are doubles, so these floating-point tests give the
-    // same answers as exact arithmetic.
-    if (!(d.centre.x - d.radius >= box.xmin && d.centre.x + d.radius <= box.xmax && d.centre.y - d.radius >= box.ymin &&
-          d.centre.y + d.radius <= box.ymax)) {
-      throw OptionError("LAMMPS box [" + detail::format_double(box.xmin) + ", " + detail::format_double(box.xmax) +
-                        "] x [" + detail::format_double(box.ymin) + ", " + detail::format_double(box.ymax) +
-                        "] does not contain disk " + std::to_string(i) + " (centre " + detail::format_point(d.centre) +
-                        ", radius " + detail::format_double(d.radius) + ")");
+    // same answers as exact arithmetic. On a periodic axis the centre lies in the half-open box.
+    const bool in_x = wraps_x ? (d.radius >= 0 && box.xmin <= d.centre.x && d.centre.x < box.xmax)
+                              : (d.centre.x - d.radius >= box.xmin && d.centre.x + d.radius <= box.xmax);
+    const bool in_y = wraps_y ? (d.radius >= 0 && box.ymin <= d.centre.y && d.centre.y < box.ymax)
+                              : (d.centre.y - d.radius >= box.ymin && d.centre.y + d.radius <= box.ymax);
+    if (!(in_x && in_y && std::isfinite(d.radius))) {
+      throw OptionError(
+          std::string("LAMMPS box [") + detail::format_double(box.xmin) + ", " + detail::format_double(box.xmax) +
+          (wraps_x ? ")" : "]") + " x [" + detail::format_double(box.ymin) + ", " + detail::format_double(box.ymax) +
+          (wraps_y ? ")" : "]") + (wraps_x ? " (periodic cell)" : "") + " does not contain disk " + std::to_string(i) +
+          " (centre " + detail::format_point(d.centre) + ", radius " + detail::format_double(d.radius) + ")");
     }
     rmax = std::max(rmax, d.radius);
   }
@@ -232,7 +238,11 @@ void write_lammps(std::ostream& out, std::span<const Disk> disks, std::span<cons
       densities.push_back(detail::format_double(rho));
     }
   }
-  out << "LAMMPS data file (atom_style sphere, 2D: z = 0) written by frontpack " << version_string << "\n\n"
+  out << "LAMMPS data file (atom_style sphere, 2D: z = 0"
+      << (wraps_y   ? "; periodic cell: boundary p p p"
+          : wraps_x ? "; periodic in x, walls in y: boundary p f p"
+                    : "")
+      << ") written by frontpack " << version_string << "\n\n"
       << disks.size() << " atoms\n"
       << type << " atom types\n\n"
       << detail::format_double(box.xmin) << ' ' << detail::format_double(box.xmax) << " xlo xhi\n"
@@ -252,15 +262,31 @@ void write_lammps(std::ostream& out, std::span<const Disk> disks, std::span<cons
   }
 }
 
-void write_vtp(std::ostream& out, std::span<const Disk> disks, std::span<const std::uint32_t> types,
-               std::stop_token stop) {
+namespace {
+
+// The VTP writer; a periodic `domain` adds the cell as field data.
+void write_vtp_file(std::ostream& out, const Domain* domain, std::span<const Disk> disks,
+                    std::span<const std::uint32_t> types, const std::stop_token& stop) {
   check_types("VTP", disks, types);
   // File format version 1.0: "offsets" holds each cell's end (version 2.0 would add a leading 0).
   const std::string n = std::to_string(disks.size());
   out << "<?xml version=\"1.0\"?>\n"
       << "<VTKFile type=\"PolyData\" version=\"1.0\" byte_order=\"LittleEndian\" header_type=\"UInt64\">\n"
-      << "  <PolyData>\n"
-      << "    <Piece NumberOfPoints=\"" << n << "\" NumberOfVerts=\"" << n
+      << "  <PolyData>\n";
+  if (domain != nullptr && domain->periodicity() != Periodicity::none) {
+    const Box cell = domain->bbox();
+    out << "    <FieldData>\n"
+        << "      <DataArray type=\"Float64\" Name=\"periodic_cell\" NumberOfTuples=\"1\" "
+           "NumberOfComponents=\"4\" format=\"ascii\">\n"
+        << "        " << detail::format_double(cell.xmin) << ' ' << detail::format_double(cell.ymin) << ' '
+        << detail::format_double(cell.xmax) << ' ' << detail::format_double(cell.ymax) << "\n"
+        << "      </DataArray>\n"
+        << "      <DataArray type=\"Int32\" Name=\"periodic_axes\" NumberOfTuples=\"1\" format=\"ascii\">\n"
+        << "        " << (domain->periodicity() == Periodicity::xy ? 2 : 1) << "\n"
+        << "      </DataArray>\n"
+        << "    </FieldData>\n";
+  }
+  out << "    <Piece NumberOfPoints=\"" << n << "\" NumberOfVerts=\"" << n
       << "\" NumberOfLines=\"0\" NumberOfStrips=\"0\" NumberOfPolys=\"0\">\n"
       << "      <PointData Scalars=\"radius\">\n"
       << "        <DataArray type=\"Float64\" Name=\"radius\" format=\"ascii\">\n";
@@ -311,13 +337,30 @@ void write_vtp(std::ostream& out, std::span<const Disk> disks, std::span<const s
       << "</VTKFile>\n";
 }
 
+}  // namespace
+
+void write_vtp(std::ostream& out, std::span<const Disk> disks, std::span<const std::uint32_t> types,
+               std::stop_token stop) {
+  write_vtp_file(out, nullptr, disks, types, stop);
+}
+
+void write_vtp(std::ostream& out, const Domain& domain, std::span<const Disk> disks,
+               std::span<const std::uint32_t> types, std::stop_token stop) {
+  write_vtp_file(out, &domain, disks, types, stop);
+}
+
 void write(std::ostream& out, Format format, const Domain& domain, std::span<const Disk> disks,
            const WriteOptions& options) {
   switch (format) {
     case Format::csv: write_csv(out, disks, options.types, options.stop); break;
     case Format::yade: write_yade(out, disks, options.types, options.stop); break;
-    case Format::lammps: write_lammps(out, disks, options.types, domain.bbox(), options.lammps, options.stop); break;
-    case Format::vtp: write_vtp(out, disks, options.types, options.stop); break;
+    case Format::lammps: {
+      LammpsOptions lammps = options.lammps;
+      lammps.periodicity = domain.periodicity();
+      write_lammps(out, disks, options.types, domain.bbox(), lammps, options.stop);
+      break;
+    }
+    case Format::vtp: write_vtp(out, domain, disks, options.types, options.stop); break;
     case Format::svg: write_svg(out, domain, disks, options.svg, options.stop); break;
   }
 }

@@ -1,0 +1,308 @@
+// The periodic overlap pass. Why it is complete and exact:
+//
+// Exact. Every decision is compare_image_distance() (exact/periodic_predicates.hpp) on the
+// disks' own doubles, an integer shift and the cell's bounds: the period enters as the exact
+// difference xmax - xmin inside the predicate, never as its rounded double. The wrap counts that
+// bring each centre into the cell are exact too (wrapped_side()): t = c - k L lies in [lo, hi)
+// exactly.
+//
+// Complete. With exact wrapped centres t_i, t_j in the half-open cell, t_i - t_j lies in (-L, L)
+// on each periodic axis, so the integer s minimising |t_i - t_j - s L| is -1, 0 or 1; on a
+// rectangular lattice the nearest image is nearest on each axis separately, so if any image of j
+// overlaps i, the image with s in {-1, 0, 1}^2 (s_y = 0 without y periodicity) does. Each pair is
+// tested with those (at most 9) shifts, whatever the radii: a disk larger than the cell needs no
+// more. A disk meets its own image iff it meets one of the shortest lattice vectors' images, (1, 0)
+// or (0, 1): the pair (i, i). The search works on the rounded wrapped centres p, each within `tol`
+// of t (tol bounds every rounding: of the period, of k L, of the subtraction), with boxes widened by
+// tol; an overlapping pair's nearest-image separation is below r_i + r_j + tol <= 2 rmax + tol on
+// each axis. The grid's cells are at least 2 rmax + 2 tol wide, so such a pair lies in the same or
+// in neighbouring cells, cyclically on a periodic axis (the cell index of p is computed with an
+// error far below tol); with fewer than 3 cells along an axis the neighbours coincide and are
+// visited once.
+//
+// Linear time: cells hold O(1) disks for a packing (cell side about 2 rmax, or larger so that
+// there are at most as many cells as disks); every disk visits at most 9 cells.
+#include "certify/periodic_pass.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+
+#include "common/stop.hpp"
+#include "exact/periodic_predicates.hpp"
+
+namespace frontpack::detail {
+
+namespace {
+
+constexpr double kFarthest = 0x1p50;  // wrap counts beyond this are not searched
+
+struct Placed {
+  Point p;              // the wrapped centre, rounded
+  double r = 0;         // radius
+  std::int64_t kx = 0;  // p ~ centre - (kx Lx, ky Ly)
+  std::int64_t ky = 0;
+  std::size_t index = 0;  // in the input
+};
+
+// One axis of the search grid.
+struct Axis {
+  bool wraps = false;
+  double lo = 0;      // the cell's bound (periodic) or the smallest wrapped centre (walls)
+  double period = 0;  // rounded; only on a periodic axis
+  double scale = 0;   // cells per unit length
+  std::size_t n = 1;  // cells
+
+  [[nodiscard]] std::size_t cell(double v) const noexcept {
+    const double t = std::floor((v - lo) * scale);
+    if (!(t > 0)) {
+      return 0;
+    }
+    return t >= static_cast<double>(n - 1) ? n - 1 : static_cast<std::size_t>(t);
+  }
+  // The distinct cells next to c (c itself included), cyclically on a periodic axis.
+  [[nodiscard]] std::size_t neighbours(std::size_t c, std::array<std::size_t, 3>& out) const noexcept {
+    std::size_t count = 0;
+    const auto add = [&](std::size_t v) {
+      if (std::find(out.begin(), out.begin() + static_cast<std::ptrdiff_t>(count), v) ==
+          out.begin() + static_cast<std::ptrdiff_t>(count)) {
+        out[count++] = v;
+      }
+    };
+    add(c);
+    if (c > 0) {
+      add(c - 1);
+    } else if (wraps) {
+      add(n - 1);
+    }
+    if (c + 1 < n) {
+      add(c + 1);
+    } else if (wraps) {
+      add(0);
+    }
+    return count;
+  }
+};
+
+bool takes_part(const Disk& d) {
+  return std::isfinite(d.centre.x) && std::isfinite(d.centre.y) && std::isfinite(d.radius) && d.radius >= 0;
+}
+
+// The exact wrap count k with lo <= v - k (hi - lo) < hi, from a rounded first guess; false when
+// v is more than kFarthest periods away.
+bool wrap_count(double v, double lo, double hi, double period, std::int64_t& k) {
+  const double q = std::floor((v - lo) / period);
+  if (!(std::abs(q) <= kFarthest)) {
+    return false;
+  }
+  k = static_cast<std::int64_t>(q);
+  // The guess is off by at most one period (|q| <= 2^50: its rounding error is below 1/4); each
+  // step moves towards the exact count, so the loop ends.
+  for (int side = wrapped_side(v, k, lo, hi); side != 0; side = wrapped_side(v, k, lo, hi)) {
+    k += side;
+  }
+  return true;
+}
+
+// cells = ceil-free count of cells of width >= h along `extent`, at least 1, at most 2^24.
+std::size_t cells_along(double extent, double h) {
+  const double g = std::floor(extent / h);
+  if (!(g >= 1)) {
+    return 1;
+  }
+  return g < 0x1p24 ? static_cast<std::size_t>(g) : std::size_t{1} << 24;
+}
+
+}  // namespace
+
+void periodic_overlapping_pairs(const Domain& domain, std::span<const Disk> disks,
+                                std::vector<std::pair<std::size_t, std::size_t>>& out, std::size_t& candidates,
+                                const std::stop_token& stop) {
+  out.clear();
+  candidates = 0;
+  const Box cell = domain.bbox();  // a periodic domain's one polygon is its cell
+  const bool wraps_y = domain.periodicity() == Periodicity::xy;
+  const double lx = cell.xmax - cell.xmin;
+  const double ly = cell.ymax - cell.ymin;
+
+  std::vector<Placed> placed;
+  placed.reserve(disks.size());
+  double rmax = 0;
+  double magnitude = std::max({std::abs(cell.xmin), std::abs(cell.xmax), std::abs(cell.ymin), std::abs(cell.ymax)});
+  for (std::size_t i = 0; i < disks.size(); ++i) {
+    throw_if_stopped(stop, i);
+    const Disk& d = disks[i];
+    if (!takes_part(d)) {
+      continue;
+    }
+    Placed w;
+    w.r = d.radius;
+    w.index = i;
+    if (!wrap_count(d.centre.x, cell.xmin, cell.xmax, lx, w.kx)) {
+      continue;
+    }
+    if (wraps_y && !wrap_count(d.centre.y, cell.ymin, cell.ymax, ly, w.ky)) {
+      continue;
+    }
+    const double shift_x = static_cast<double>(w.kx) * lx;
+    const double shift_y = static_cast<double>(w.ky) * ly;
+    w.p = Point{std::clamp(d.centre.x - shift_x, cell.xmin, cell.xmax),
+                wraps_y ? std::clamp(d.centre.y - shift_y, cell.ymin, cell.ymax) : d.centre.y};
+    magnitude =
+        std::max({magnitude, std::abs(d.centre.x) + std::abs(shift_x), std::abs(d.centre.y) + std::abs(shift_y)});
+    rmax = std::max(rmax, d.radius);
+    placed.push_back(w);
+  }
+  if (placed.empty()) {
+    return;
+  }
+  // Each rounding above (the period, k L, c - k L, r_i + r_j, the box test's own subtraction) is
+  // at most 2^-53 of a magnitude below `magnitude + rmax`; a few of them add up far below 2^-46.
+  const double tol = 0x1p-46 * (magnitude + rmax);
+
+  // The grid: cells at least 2 rmax + 2 tol wide (a relative margin of 2^-20 covers the rounding
+  // of the cell index), and no more cells than disks.
+  Axis ax;
+  ax.wraps = true;
+  ax.lo = cell.xmin;
+  ax.period = lx;
+  Axis ay;
+  ay.wraps = wraps_y;
+  double y_extent = ly;
+  if (wraps_y) {
+    ay.lo = cell.ymin;
+    ay.period = ly;
+  } else {
+    double top = placed.front().p.y;
+    ay.lo = top;
+    for (const Placed& w : placed) {
+      ay.lo = std::min(ay.lo, w.p.y);
+      top = std::max(top, w.p.y);
+    }
+    y_extent = top - ay.lo;
+  }
+  const double sparse = std::sqrt(lx * std::max(y_extent, 2 * rmax) / static_cast<double>(placed.size()));
+  double h = (2 * rmax + 2 * tol) * (1 + 0x1p-20);
+  if (std::isfinite(sparse) && sparse > h) {
+    h = sparse;
+  }
+  ax.n = cells_along(lx, h);
+  ax.scale = static_cast<double>(ax.n) / lx;
+  ay.n = wraps_y ? cells_along(ly, h) : std::min<std::size_t>(cells_along(y_extent, h) + 1, std::size_t{1} << 24);
+  ay.scale = wraps_y ? static_cast<double>(ay.n) / ly : 1 / h;
+  if (!std::isfinite(ay.scale)) {
+    ay.scale = 0;  // radii beyond the doubles' range: one row
+    ay.n = 1;
+  }
+
+  // Counting sort by cell, stable.
+  const std::size_t cells = ax.n * ay.n;
+  std::vector<std::size_t> start(cells + 1, 0);
+  std::vector<std::size_t> cell_of(placed.size());
+  for (std::size_t a = 0; a < placed.size(); ++a) {
+    cell_of[a] = ay.cell(placed[a].p.y) * ax.n + ax.cell(placed[a].p.x);
+    ++start[cell_of[a] + 1];
+  }
+  for (std::size_t c = 0; c < cells; ++c) {
+    start[c + 1] += start[c];
+  }
+  std::vector<Placed> sorted(placed.size());
+  {
+    std::vector<std::size_t> next(start.begin(), start.end() - 1);
+    for (std::size_t a = 0; a < placed.size(); ++a) {
+      sorted[next[cell_of[a]]++] = placed[a];
+    }
+  }
+  placed.clear();
+  placed.shrink_to_fit();
+
+  // A disk and its own image (1, 0) or, on a torus, (0, 1): the shortest lattice vectors.
+  for (const Placed& w : sorted) {
+    const Point c = disks[w.index].centre;
+    const bool near_x = 2 * w.r + tol >= lx;
+    const bool near_y = wraps_y && 2 * w.r + tol >= ly;
+    if (near_x || near_y) {
+      ++candidates;
+      if ((near_x && compare_image_distance(c, c, w.r, w.r, 1, 0, cell) < 0) ||
+          (near_y && compare_image_distance(c, c, w.r, w.r, 0, 1, cell) < 0)) {
+        out.emplace_back(w.index, w.index);
+      }
+    }
+  }
+
+  const std::array<std::int64_t, 3> shifts = {-1, 0, 1};
+  const std::size_t sy_count = wraps_y ? 3 : 1;
+  const std::int64_t* sy_first = wraps_y ? shifts.data() : shifts.data() + 1;
+  std::array<std::size_t, 3> nx{};
+  std::array<std::size_t, 3> ny{};
+  for (std::size_t cy = 0; cy < ay.n; ++cy) {
+    throw_if_stopped(stop);
+    const std::size_t count_y = ay.neighbours(cy, ny);
+    for (std::size_t cx = 0; cx < ax.n; ++cx) {
+      const std::size_t own = cy * ax.n + cx;
+      if (start[own] == start[own + 1]) {
+        continue;
+      }
+      const std::size_t count_x = ax.neighbours(cx, nx);
+      for (std::size_t a = start[own]; a < start[own + 1]; ++a) {
+        const Placed& p = sorted[a];
+        for (std::size_t u = 0; u < count_y; ++u) {
+          for (std::size_t v = 0; v < count_x; ++v) {
+            const std::size_t other = ny[u] * ax.n + nx[v];
+            for (std::size_t b = std::max(start[other], a + 1); b < start[other + 1]; ++b) {
+              const Placed& q = sorted[b];
+              const double reach = p.r + q.r + tol;
+              bool met = false;
+              bool overlap = false;
+              for (std::size_t t = 0; t < sy_count && !overlap; ++t) {
+                const std::int64_t sy = sy_first[t];
+                if (!(std::abs(p.p.y - (q.p.y + static_cast<double>(sy) * ly)) <= reach)) {
+                  continue;
+                }
+                for (const std::int64_t sx : shifts) {
+                  if (!(std::abs(p.p.x - (q.p.x + static_cast<double>(sx) * lx)) <= reach)) {
+                    continue;
+                  }
+                  met = true;
+                  if (compare_image_distance(disks[p.index].centre, disks[q.index].centre, p.r, q.r, sx + p.kx - q.kx,
+                                             sy + p.ky - q.ky, cell) < 0) {
+                    overlap = true;
+                    break;
+                  }
+                }
+              }
+              if (met) {
+                ++candidates;
+              }
+              if (overlap) {
+                out.emplace_back(std::min(p.index, q.index), std::max(p.index, q.index));
+              }
+            }
+          }
+        }
+      }
+    }
+  }
+  std::sort(out.begin(), out.end());
+}
+
+double periodic_overlap_depth(const Domain& domain, const Disk& a, const Disk& b, bool same) {
+  const Box cell = domain.bbox();
+  const double lx = cell.xmax - cell.xmin;
+  const double ly = cell.ymax - cell.ymin;
+  const bool wraps_y = domain.periodicity() == Periodicity::xy;
+  double dx = a.centre.x - b.centre.x;
+  double dy = a.centre.y - b.centre.y;
+  dx -= lx * std::round(dx / lx);
+  if (wraps_y) {
+    dy -= ly * std::round(dy / ly);
+  }
+  double distance = std::hypot(dx, dy);
+  if (same) {
+    distance = wraps_y ? std::min(lx, ly) : lx;
+  }
+  return a.radius + b.radius - distance;
+}
+
+}  // namespace frontpack::detail
