@@ -401,3 +401,31 @@ frontpack_tool_test(fill_height 0 "target: +fraction 0\\.[0-9]+ of the area fill
   fill ${S}/plate_with_holes.wkt --radius uniform:0.01,0.02 --height 0.75)
 frontpack_tool_test(fill_height_below 5 "height -1: the level must lie above the domain's lowest point, y = 0"
   fill ${S}/plate_with_holes.wkt --height -1)
+
+# Periodic cells (--periodic): overlaps across the seams are found and named, touching across a
+# seam certifies, a shear cell's walls are walls, and bad cells are refused naming the option.
+set(P ${CMAKE_CURRENT_SOURCE_DIR}/data/periodic)
+frontpack_tool_test(check_periodic_seam_overlap 6
+  "overlaps: +1 pair .*worst: disks 1 and 3 overlap by about 0\\.25.*overlap 1 3.*NOT certified"
+  check --periodic 10,10 ${P}/seam_overlap.csv --all)
+frontpack_tool_test(check_periodic_touching 0 "outside: +0 disks.*overlaps: +0 pairs.*certified"
+  check --periodic 0,0,10,10 ${P}/touching.csv)
+frontpack_tool_test(check_periodic_shear_walls 6 "outside: +2 disks .*worst: disk 4 .*overlaps: +0 pairs.*outside 5:"
+  check --periodic 10,10 --periodic-axes x ${P}/touching.csv --all)
+frontpack_tool_test(check_periodic_bad_number 5 "--periodic '10,abc': 'abc' is not a finite number"
+  check --periodic 10,abc ${P}/touching.csv)
+frontpack_tool_test(check_periodic_count 5 "--periodic '1,2,3': 3 numbers; expected LX,LY or XMIN,YMIN,XMAX,YMAX"
+  check --periodic 1,2,3 ${P}/touching.csv)
+frontpack_tool_test(check_periodic_empty 5 "--periodic '10,0': invalid domain: periodic cell .*empty"
+  check --periodic 10,0 ${P}/touching.csv)
+frontpack_tool_test(check_periodic_axes 5 "--periodic-axes 'z': expected xy or x"
+  check --periodic 10,10 --periodic-axes z ${P}/touching.csv)
+frontpack_tool_test(check_periodic_two_files 1 "with --periodic, give only DISKS"
+  check --periodic 10,10 ${S}/unit_square.wkt ${P}/touching.csv)
+frontpack_tool_test(check_periodic_and_wkt 1 "--wkt excludes --periodic"
+  check --periodic 10,10 --wkt "POLYGON((0 0,1 0,1 1,0 0))" ${P}/touching.csv)
+set(O ${TOOL_OUT}/render_periodic_images)
+frontpack_tool_check(render_periodic_images 0 "wrote: .*p\\.png \\(png, 500 x 505, 168 disks\\)" PNG ${O}/p.png 500 505
+  ARGS render --periodic 12,12.12435565298214 ${P}/hex_torus.csv --images --no-histogram --width 500 -o ${O}/p.png)
+frontpack_tool_test(render_images_needs_periodic 1 "--images requires --periodic"
+  render ${S}/unit_square.wkt ${P}/hex_torus.csv --images -o images.png)

@@ -173,36 +173,11 @@ void huge_disk_path(cairo_t* cr, const View& view, frontpack::Point c, double r,
   cairo_close_path(cr);
 }
 
-void draw(cairo_t* cr, const View& view, Picture format, const frontpack::Domain& domain,
-          std::span<const frontpack::Disk> disks, int width_px, int height_px) {
-  cairo_set_source_rgb(cr, 1, 1, 1);
-  cairo_paint(cr);
-
-  // The domain: every ring in one path, filled even-odd so that holes stay white.
-  const auto ring_path = [&](const frontpack::Ring& ring) {
-    for (std::size_t k = 0; k < ring.size(); ++k) {
-      (k == 0 ? cairo_move_to : cairo_line_to)(cr, view.x(ring[k].x), view.y(ring[k].y));
-    }
-    cairo_close_path(cr);
-  };
-  const auto domain_path = [&] {
-    cairo_new_path(cr);
-    for (const frontpack::Polygon& polygon : domain.polygons()) {
-      ring_path(polygon.outer);
-      for (const frontpack::Ring& hole : polygon.holes) {
-        ring_path(hole);
-      }
-    }
-  };
-  cairo_set_fill_rule(cr, CAIRO_FILL_RULE_EVEN_ODD);
-  domain_path();
-  cairo_set_source_rgb(cr, 0.9, 0.9, 0.9);
-  cairo_fill(cr);
-  cairo_set_fill_rule(cr, CAIRO_FILL_RULE_WINDING);
-
+// The disks, coloured by radius on the scale `colours`.
+void draw_disks(cairo_t* cr, const View& view, Picture format, std::span<const frontpack::Disk> disks,
+                const ColourScale& colours, int width_px, int height_px) {
   // The disks, grouped by colour (64 levels of the colour map) so that each group is filled as
   // a few large paths rather than one fill per disk: fast for millions of disks, small SVGs.
-  const ColourScale colours(disks);
   const auto level_of = [&](double r) { return colours.level(r); };
   std::vector<std::uint32_t> start(kLevels + 1, 0);
   for (const frontpack::Disk& d : disks) {
@@ -288,12 +263,101 @@ void draw(cairo_t* cr, const View& view, Picture format, const frontpack::Domain
       }
     }
   }
+}
 
+// The images of the disks that cross a periodic side of a periodic cell: each disk shifted by a
+// period (x, y or both on a torus) whose box meets the cell.
+std::vector<frontpack::Disk> periodic_images(const frontpack::Domain& domain, std::span<const frontpack::Disk> disks) {
+  std::vector<frontpack::Disk> images;
+  if (domain.periodicity() == frontpack::Periodicity::none) {
+    return images;
+  }
+  const frontpack::Box cell = domain.bbox();
+  const double lx = cell.xmax - cell.xmin;
+  const double ly = cell.ymax - cell.ymin;
+  const int ky_max = domain.periodicity() == frontpack::Periodicity::xy ? 1 : 0;
+  for (const frontpack::Disk& d : disks) {
+    for (int kx = -1; kx <= 1; ++kx) {
+      for (int ky = -ky_max; ky <= ky_max; ++ky) {
+        const frontpack::Point c{d.centre.x + kx * lx, d.centre.y + ky * ly};
+        if ((kx != 0 || ky != 0) && c.x - d.radius < cell.xmax && c.x + d.radius > cell.xmin &&
+            c.y - d.radius < cell.ymax && c.y + d.radius > cell.ymin) {
+          images.push_back({c, d.radius});
+        }
+      }
+    }
+  }
+  return images;
+}
+
+void draw(cairo_t* cr, const View& view, Picture format, const frontpack::Domain& domain,
+          std::span<const frontpack::Disk> disks, std::span<const frontpack::Disk> images, int width_px,
+          int height_px) {
+  cairo_set_source_rgb(cr, 1, 1, 1);
+  cairo_paint(cr);
+
+  // The domain: every ring in one path, filled even-odd so that holes stay white.
+  const auto ring_path = [&](const frontpack::Ring& ring) {
+    for (std::size_t k = 0; k < ring.size(); ++k) {
+      (k == 0 ? cairo_move_to : cairo_line_to)(cr, view.x(ring[k].x), view.y(ring[k].y));
+    }
+    cairo_close_path(cr);
+  };
+  const auto domain_path = [&] {
+    cairo_new_path(cr);
+    for (const frontpack::Polygon& polygon : domain.polygons()) {
+      ring_path(polygon.outer);
+      for (const frontpack::Ring& hole : polygon.holes) {
+        ring_path(hole);
+      }
+    }
+  };
+  cairo_set_fill_rule(cr, CAIRO_FILL_RULE_EVEN_ODD);
   domain_path();
+  cairo_set_source_rgb(cr, 0.9, 0.9, 0.9);
+  cairo_fill(cr);
+  cairo_set_fill_rule(cr, CAIRO_FILL_RULE_WINDING);
+
+  const ColourScale colours(disks);
+  if (!images.empty()) {
+    // Lighter: the images drawn on a group painted at a third of their opacity.
+    cairo_push_group(cr);
+    draw_disks(cr, view, format, images, colours, width_px, height_px);
+    cairo_pop_group_to_source(cr);
+    cairo_paint_with_alpha(cr, 0.35);
+  }
+  draw_disks(cr, view, format, disks, colours, width_px, height_px);
+
   cairo_set_source_rgb(cr, 0.15, 0.15, 0.15);
-  cairo_set_line_width(cr, std::max(1.0, width_px / 800.0));
+  const double line = std::max(1.0, width_px / 800.0);
+  cairo_set_line_width(cr, line);
   cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
+  if (domain.periodicity() == frontpack::Periodicity::none) {
+    domain_path();
+    cairo_stroke(cr);
+    return;
+  }
+  // A periodic cell: its walls solid, its periodic sides dashed (the plane continues there).
+  const frontpack::Box b = domain.bbox();
+  const auto side = [&](double x0, double y0, double x1, double y1) {
+    cairo_move_to(cr, view.x(x0), view.y(y0));
+    cairo_line_to(cr, view.x(x1), view.y(y1));
+  };
+  cairo_new_path(cr);
+  if (domain.periodicity() == frontpack::Periodicity::x) {
+    side(b.xmin, b.ymin, b.xmax, b.ymin);
+    side(b.xmin, b.ymax, b.xmax, b.ymax);
+    cairo_stroke(cr);
+  } else {
+    side(b.xmin, b.ymin, b.xmax, b.ymin);
+    side(b.xmin, b.ymax, b.xmax, b.ymax);
+  }
+  side(b.xmin, b.ymin, b.xmin, b.ymax);
+  side(b.xmax, b.ymin, b.xmax, b.ymax);
+  const double dash[] = {4 * line, 3 * line};
+  cairo_set_dash(cr, dash, 2, 0);
   cairo_stroke(cr);
+  cairo_set_dash(cr, nullptr, 0, 0);
 }
 
 View make_view(const frontpack::Domain& domain, int width_px) {
@@ -406,7 +470,9 @@ void render(frontpack::OutputFile& out, Picture format, const frontpack::Domain&
   check(cairo_surface_status(surface.get()), path);
   {
     const Context cr(cairo_create(surface.get()));
-    draw(cr.get(), view, format, domain, disks, width, height);
+    const std::vector<frontpack::Disk> images =
+        options.images ? periodic_images(domain, disks) : std::vector<frontpack::Disk>{};
+    draw(cr.get(), view, format, domain, disks, images, width, height);
     if (options.stop.stop_requested()) {
       throw frontpack::CancelledError();
     }

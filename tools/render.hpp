@@ -31,6 +31,9 @@ struct RenderOptions {
   std::optional<frontpack::Radii> requested;
   /// How the request was written (the --radius spec), for the panel's caption.
   std::string requested_spec;
+  /// A periodic cell: also draw, lighter, the images of the disks that cross a periodic side (each
+  /// disk shifted by a period whose copy reaches into the cell), so that a seam can be inspected.
+  bool images = false;
   /// Once a stop is requested, render() throws frontpack::CancelledError.
   std::stop_token stop{};
 };
@@ -44,7 +47,8 @@ struct RenderOptions {
 /// margin), plus histogram_height(width_px) if `histogram`.
 [[nodiscard]] int picture_height(const frontpack::Domain& domain, int width_px, bool histogram = true);
 
-/// Draws the domain (light grey, holes even-odd, dark outline) and the disks (coloured by radius,
+/// Draws the domain (light grey, holes even-odd, dark outline; a periodic cell's periodic sides
+/// dashed, its walls solid) and the disks (coloured by radius,
 /// viridis: small dark blue, large yellow; thin outlines when they are at least 3 px across) on
 /// white and, unless options.histogram is false, below it the size-distribution panel: a
 /// histogram of the radii by area (each bar the share of the total disk area in a bin of equal

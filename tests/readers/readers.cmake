@@ -90,3 +90,25 @@ if(FRONTPACK_BUILD_TOOLS)
     set_tests_properties(${name} PROPERTIES SKIP_RETURN_CODE 77 TIMEOUT 300 LABELS readers COST 50)
   endforeach()
 endif()
+
+# Periodic cells: the LAMMPS deck of a dense periodic packing (boundary p p p, and p f p for a
+# shear cell) runs in the real lmp: no contact at step 0, no atom lost, the first snapshot
+# certified by check --periodic, and a planted overlap across the seam seen by both
+# (tests/readers/check_periodic_deck.py). Skip-or-fail as above.
+add_executable(frontpack_periodic_deck ${CMAKE_CURRENT_LIST_DIR}/periodic_deck.cpp)
+target_link_libraries(frontpack_periodic_deck PRIVATE frontpack::frontpack)
+frontpack_target_settings(frontpack_periodic_deck)
+if(FRONTPACK_BUILD_TOOLS)
+  foreach(axes xy x)
+    if(frontpack_reader_python)
+      add_test(NAME decks.lammps.periodic_${axes}
+        COMMAND ${frontpack_reader_python} ${CMAKE_CURRENT_LIST_DIR}/check_periodic_deck.py ${axes}
+                $<TARGET_FILE:frontpack_periodic_deck> $<TARGET_FILE:frontpack_tool>
+                ${CMAKE_CURRENT_BINARY_DIR}/decks/periodic_${axes})
+    else()
+      add_test(NAME decks.lammps.periodic_${axes}
+        COMMAND sh -c "echo 'python3 is not installed'; test \"$FRONTPACK_REQUIRE_READERS\" = 1 && exit 1; exit 77")
+    endif()
+    set_tests_properties(decks.lammps.periodic_${axes} PROPERTIES SKIP_RETURN_CODE 77 TIMEOUT 300 LABELS readers)
+  endforeach()
+endif()

@@ -32,6 +32,7 @@ struct RenderArgs {
   std::string radius;
   int width = 1200;
   bool no_histogram = false;
+  bool images = false;
   bool quiet = false;
 };
 
@@ -40,6 +41,7 @@ int run_render(RenderArgs& a) {
   frontpack_tool::RenderOptions picture;
   picture.width_px = a.width;
   picture.histogram = !a.no_histogram;
+  picture.images = a.images;
   if (!a.radius.empty()) {
     picture.requested = frontpack::parse_radii(a.radius);
     picture.requested_spec = a.radius;
@@ -78,6 +80,9 @@ Command add_render(CLI::App& app) {
                   "with the KS distance by area");
   cmd->add_flag("--no-histogram", args->no_histogram,
                 "the packing alone, without the size-distribution panel below it");
+  cmd->add_flag("--images", args->images,
+                "with --periodic: also draw, lighter, the images of the disks that cross a periodic side")
+      ->needs(args->in.domain.periodic_option);
   cmd->add_flag("-q,--quiet", args->quiet, "print nothing but errors");
   cmd->footer(
       "Example:\n"

@@ -1,0 +1,90 @@
+#!/usr/bin/env python3
+"""Runs the LAMMPS deck of a periodic cell in the real LAMMPS and checks it.
+
+    check_periodic_deck.py xy|x HELPER TOOL WORKDIR
+
+HELPER (frontpack_periodic_deck) writes a dense periodic packing (a bidisperse hexagonal lattice
+crossing the periodic sides, certified exactly) and its LAMMPS deck: boundary p p p (xy) or
+p f p with wall planes (x). `lmp` runs it, 1000 steps under gravity. At step 0 every atom is where
+the CSV puts it and feels its weight and nothing else (fx = 0, fy = -m g: no contact, across the
+seams included); at step 1000 no atom is lost; `frontpack check --periodic` certifies the dump's
+first snapshot. Then the same with one disk moved across the seam into its neighbour's image by 1%
+of a radius: LAMMPS must see that contact at step 0 and the check must name the pair (exit 6), so
+the test can fail. Exit 0 pass, 1 fail, 77 LAMMPS is not installed (a skip), unless
+FRONTPACK_REQUIRE_READERS=1.
+"""
+import os
+import shutil
+import subprocess
+import sys
+
+from check_decks import read_dump
+from reader_support import fail, missing, run
+from reader_support import read_csv as read_any_csv
+
+STEPS = 1000
+
+
+def make(helper, axes, kind, work):
+    out = os.path.join(work, kind)
+    shutil.rmtree(out, ignore_errors=True)
+    cell = run([helper, axes, kind, out], work).strip()
+    run([shutil.which("lmp"), "-in", "in.frontpack", "-log", "none", "-nocite"], os.path.join(out, "deck"))
+    want = read_any_csv(os.path.join(out, "packing.csv"), header="x,y,r,type", at_least=400)
+    frames = read_dump(os.path.join(out, "deck", "free.lammpstrj"))
+    return out, cell, want, frames
+
+
+def contacts_at_start(start, want, gravity):
+    """The atoms that feel more than their weight at step 0; fails if an atom is not where the CSV
+    puts it."""
+    rel = 1e-12
+    touched = []
+    for a, (x, y, r, t) in zip(start, want):
+        if int(a["type"]) != t or abs(a["x"] - x) > 1e-15 or abs(a["y"] - y) > 1e-15 or abs(a["radius"] - r) > rel * r:
+            fail("atom %d is %r at step 0, frontpack wrote %r" % (int(a["id"]), a, (x, y, r, t)))
+        weight = a["mass"] * gravity
+        if a["fx"] != 0 or abs(a["fy"] + weight) > rel * weight:
+            touched.append(int(a["id"]))
+    return touched
+
+
+def main():
+    axes, helper, tool, work = sys.argv[1:5]
+    if shutil.which("lmp") is None:
+        missing("lmp")
+    os.makedirs(work, exist_ok=True)
+
+    out, cell, want, frames = make(helper, axes, "clean", work)
+    if sorted(frames) != list(range(0, STEPS + 1, STEPS // 10)):
+        fail("dump timesteps %r, expected 0 to %d every %d" % (sorted(frames), STEPS, STEPS // 10))
+    touched = contacts_at_start(frames[0], want, 9.81)
+    if touched:
+        fail("atoms %r feel a contact at step 0: an overlap LAMMPS sees" % touched[:10])
+    for step, atoms in frames.items():
+        if len(atoms) != len(want):
+            fail("%d atoms at step %d, frontpack wrote %d: atoms lost" % (len(atoms), step, len(want)))
+    deck = os.path.join(out, "deck")
+    with open(os.path.join(deck, "in.frontpack"), encoding="ascii") as f:
+        script = f.read()
+    boundary = "boundary p p p" if axes == "xy" else "boundary p f p"
+    if boundary not in script:
+        fail("in.frontpack has no %r" % boundary)
+    check = [tool, "check", "--periodic", cell, "--periodic-axes", axes, "free.lammpstrj", "--timestep", "0"]
+    run(check, deck)
+    print("lammps %s: %d atoms, step 0 contact-free (each feels only its weight), none lost in %d steps, "
+          "step 0 certified by frontpack check --periodic" % (boundary, len(want), STEPS))
+
+    out, cell, want, frames = make(helper, axes, "overlap", work)
+    touched = contacts_at_start(frames[0], want, 9.81)
+    if 1 not in touched:
+        fail("the planted overlap across the seam (atom 1) is not seen by LAMMPS at step 0: %r" % touched[:10])
+    result = run(check + ["--all"], os.path.join(out, "deck"), expect=6)
+    if "overlap 0 23" not in result:
+        fail("check did not name the planted pair 0 23:\n" + result[-2000:])
+    print("lammps %s: the planted overlap across the seam is seen by LAMMPS (atoms %r) and by check" %
+          (boundary, touched))
+
+
+if __name__ == "__main__":
+    main()
