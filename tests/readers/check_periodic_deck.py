@@ -3,8 +3,8 @@
 
     check_periodic_deck.py xy|x HELPER TOOL WORKDIR
 
-HELPER (frontpack_periodic_deck) writes a dense periodic packing (a bidisperse hexagonal lattice
-crossing the periodic sides, certified exactly) and its LAMMPS deck: boundary p p p (xy) or
+HELPER (frontpack_periodic_deck) writes a dense periodic packing (fill's closed form in the cell,
+bidisperse 1:1.4, certified exactly) and its LAMMPS deck: boundary p p p (xy) or
 p f p with wall planes (x). `lmp` runs it, 1000 steps under gravity. At step 0 every atom is where
 the CSV puts it and feels its weight and nothing else (fx = 0, fy = -m g: no contact, across the
 seams included); at step 1000 no atom is lost; `frontpack check --periodic` certifies the dump's
@@ -28,11 +28,12 @@ STEPS = 1000
 def make(helper, axes, kind, work):
     out = os.path.join(work, kind)
     shutil.rmtree(out, ignore_errors=True)
-    cell = run([helper, axes, kind, out], work).strip()
+    lines = run([helper, axes, kind, out], work).splitlines()
+    cell, planted = lines[0], (lines[1] if len(lines) > 1 else "")
     run([shutil.which("lmp"), "-in", "in.frontpack", "-log", "none", "-nocite"], os.path.join(out, "deck"))
     want = read_any_csv(os.path.join(out, "packing.csv"), header="x,y,r,type", at_least=400)
     frames = read_dump(os.path.join(out, "deck", "free.lammpstrj"))
-    return out, cell, want, frames
+    return out, cell, planted, want, frames
 
 
 def contacts_at_start(start, want, gravity):
@@ -55,7 +56,7 @@ def main():
         missing("lmp")
     os.makedirs(work, exist_ok=True)
 
-    out, cell, want, frames = make(helper, axes, "clean", work)
+    out, cell, _, want, frames = make(helper, axes, "clean", work)
     if sorted(frames) != list(range(0, STEPS + 1, STEPS // 10)):
         fail("dump timesteps %r, expected 0 to %d every %d" % (sorted(frames), STEPS, STEPS // 10))
     touched = contacts_at_start(frames[0], want, 9.81)
@@ -75,13 +76,15 @@ def main():
     print("lammps %s: %d atoms, step 0 contact-free (each feels only its weight), none lost in %d steps, "
           "step 0 certified by frontpack check --periodic" % (boundary, len(want), STEPS))
 
-    out, cell, want, frames = make(helper, axes, "overlap", work)
+    out, cell, planted, want, frames = make(helper, axes, "overlap", work)
+    i, j = (int(v) for v in planted.split())
     touched = contacts_at_start(frames[0], want, 9.81)
-    if 1 not in touched:
-        fail("the planted overlap across the seam (atom 1) is not seen by LAMMPS at step 0: %r" % touched[:10])
+    if i + 1 not in touched or j + 1 not in touched:
+        fail("the planted overlap across the seam (atoms %d and %d) is not seen by LAMMPS at step 0: %r"
+             % (i + 1, j + 1, touched[:10]))
     result = run(check + ["--all"], os.path.join(out, "deck"), expect=6)
-    if "overlap 0 23" not in result:
-        fail("check did not name the planted pair 0 23:\n" + result[-2000:])
+    if "overlap %d %d\n" % (i, j) not in result:
+        fail("check did not name the planted pair %d %d:\n%s" % (i, j, result[-2000:]))
     print("lammps %s: the planted overlap across the seam is seen by LAMMPS (atoms %r) and by check" %
           (boundary, touched))
 

@@ -1,15 +1,17 @@
 // Writes a dense periodic packing and its LAMMPS deck, for the test that runs the deck in the real
 // LAMMPS (check_periodic_deck.py): frontpack_periodic_deck xy|x clean|overlap OUTDIR
 // -> OUTDIR/packing.csv (x,y,r,type), OUTDIR/deck/ (make_deck, 1000 steps); prints the cell as
-// XMIN,YMIN,XMAX,YMAX. The packing is a hexagonal lattice of bidisperse disks (radii 0.48 and 0.34
-// of the spacing, one disk in three small), shifted so that rows and columns cross the periodic
-// sides, certified exactly before it is written. `overlap` moves one disk on the left side across
-// the seam into its neighbour's image by 1% of a radius: the test's checks must see it.
+// XMIN,YMIN,XMAX,YMAX on the first line, and for `overlap` the planted pair "I J" on the second.
+// The packing is fill()'s closed form in the periodic cell, bidisperse 1:1.4 (types 1 and 2 by
+// size), certified by fill. `overlap` moves the disk nearest to the left side across the seam
+// into its nearest image neighbour by 1% of rmin: the test's checks must see it.
 #include <cmath>
+#include <cstdint>
 #include <exception>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -25,58 +27,74 @@ int main(int argc, char** argv) {
   try {
     const bool torus = std::string(argv[1]) == "xy";
     const bool overlap = std::string(argv[2]) == "overlap";
-    const double a = 0.01;  // lattice spacing, m
-    const double row = a * std::sqrt(3.0) / 2;
-    const int nx = 24;
-    const int ny = 20;  // even: the lattice is periodic in y
-    const double big = 0.48 * a;
-    const double small = 0.34 * a;
-    // Origin away from 0, so that the cell's bounds are not round numbers.
-    const double x0 = 0.1;
-    const double y0 = -0.03;
-    const fp::Box cell{x0, y0, x0 + nx * a, torus ? y0 + ny * row : y0 + (ny - 1) * row + 2 * big * 1.01};
-    std::vector<fp::Disk> disks;
-    std::vector<std::uint32_t> types;
-    for (int j = 0; j < ny; ++j) {
-      for (int i = 0; i < nx; ++i) {
-        const bool is_small = (i + 2 * j) % 3 == 0;
-        double x = x0 + (i + 0.5 * (j % 2) + 0.3) * a;
-        double y = torus ? y0 + (j + 0.2) * row : y0 + big * 1.01 + j * row;
-        if (x >= cell.xmax) {
-          x -= cell.xmax - cell.xmin;
-        }
-        if (torus && y >= cell.ymax) {
-          y -= cell.ymax - cell.ymin;
-        }
-        disks.push_back({{x, y}, is_small ? small : big});
-        types.push_back(is_small ? 2 : 1);
-      }
-    }
+    // Bounds that are not round numbers: the periods are not doubles' exact differences of 0.
+    const fp::Box cell{0.1, -0.03, 0.1 + 0.24, -0.03 + 0.18};
     const fp::Domain domain = fp::Domain::periodic(cell, torus ? fp::Periodicity::xy : fp::Periodicity::x);
+    fp::FillOptions options;
+    options.method = fp::Method::closed;
+    options.radii = fp::parse_radii("discrete:0.004:0.5,0.0056:0.5");
+    options.seed = 4;
+    std::vector<fp::Disk> disks = fp::fill(domain, options).disks;
+    std::vector<std::uint32_t> types;
+    for (const fp::Disk& d : disks) {
+      types.push_back(d.radius > 0.0048 ? 2 : 1);
+    }
     const fp::CertifyReport report = fp::certify(domain, disks);
-    if (!report.outside.empty() || !report.overlapping.empty()) {
-      std::cerr << "frontpack_periodic_deck: the lattice is not certified\n";
+    if (!report.outside.empty() || !report.overlapping.empty() || disks.size() < 400) {
+      std::cerr << "frontpack_periodic_deck: the fill is not certified, or too small\n";
       return 2;
     }
+    std::string planted;
     if (overlap) {
-      // Disk 0 sits 0.3 a right of the left side; the last disk of row 0 is its left neighbour
-      // through the seam (a apart). Move disk 0 left until it overlaps that image by 1% of rmin.
-      const fp::Disk& left = disks[nx - 1];
-      const double gap = a - disks[0].radius - left.radius;
-      disks[0].centre.x -= gap + 0.01 * small;
-      if (disks[0].centre.x < cell.xmin) {
-        disks[0].centre.x += cell.xmax - cell.xmin;
+      // The disk nearest the left side, and its nearest neighbour through the seam (minimum image).
+      const double lx = cell.xmax - cell.xmin;
+      const double ly = cell.ymax - cell.ymin;
+      std::size_t i = 0;
+      for (std::size_t k = 1; k < disks.size(); ++k) {
+        if (disks[k].centre.x < disks[i].centre.x) {
+          i = k;
+        }
       }
-      if (fp::certify(domain, disks).overlapping.empty()) {
+      std::size_t j = i;
+      double best = std::numeric_limits<double>::infinity();
+      double dx_best = 0;
+      double dy_best = 0;
+      for (std::size_t k = 0; k < disks.size(); ++k) {
+        const double dx = disks[i].centre.x - (disks[k].centre.x - lx);
+        double dy = disks[i].centre.y - disks[k].centre.y;
+        if (torus) {
+          dy -= ly * std::round(dy / ly);
+        }
+        const double gap = std::hypot(dx, dy) - disks[i].radius - disks[k].radius;
+        if (k != i && gap < best) {
+          best = gap;
+          j = k;
+          dx_best = dx;
+          dy_best = dy;
+        }
+      }
+      const double length = std::hypot(dx_best, dy_best);
+      const double move = best + 0.01 * 0.004;
+      disks[i].centre.x -= move * dx_best / length;
+      disks[i].centre.y -= move * dy_best / length;
+      if (disks[i].centre.x < cell.xmin) {
+        disks[i].centre.x += lx;
+      }
+      if (torus && disks[i].centre.y < cell.ymin) {
+        disks[i].centre.y += ly;
+      }
+      const fp::CertifyReport planted_report = fp::certify(domain, disks);
+      if (planted_report.overlapping.empty() || !planted_report.outside.empty()) {
         std::cerr << "frontpack_periodic_deck: the planted overlap was not made\n";
         return 2;
       }
+      planted = std::to_string(std::min(i, j)) + " " + std::to_string(std::max(i, j));
     }
     const std::filesystem::path dir = argv[3];
     std::filesystem::create_directories(dir / "deck");
-    fp::WriteOptions options;
-    options.types = types;
-    fp::write_file(dir / "packing.csv", fp::Format::csv, domain, disks, options);
+    fp::WriteOptions write;
+    write.types = types;
+    fp::write_file(dir / "packing.csv", fp::Format::csv, domain, disks, write);
     fp::DeckOptions deck;
     deck.simulator = fp::Simulator::lammps;
     deck.densities = {2500, 7800};
@@ -85,7 +103,7 @@ int main(int argc, char** argv) {
       std::ofstream(dir / "deck" / f.name) << f.text;
     }
     std::cout.precision(17);
-    std::cout << cell.xmin << "," << cell.ymin << "," << cell.xmax << "," << cell.ymax << "\n";
+    std::cout << cell.xmin << "," << cell.ymin << "," << cell.xmax << "," << cell.ymax << "\n" << planted << "\n";
     return 0;
   } catch (const std::exception& e) {
     std::cerr << "frontpack_periodic_deck: " << e.what() << "\n";
