@@ -1,7 +1,8 @@
 // A periodic cell's outputs: the LAMMPS data file's box is the cell and its title names the
 // boundary command, disks may cross a periodic side but their centres lie in the half-open cell;
 // the VTP file carries the cell as field data and still reads back; the LAMMPS deck of a
-// periodic cell has no wall disks and says `boundary p p p` or `p f p`; the other decks refuse it.
+// periodic cell has no wall disks and says `boundary p p p` or `p f p`; Yade's sets O.periodic
+// (a shear cell with facet walls); LIGGGHTS's refuses it.
 #include <gtest/gtest.h>
 
 #include <sstream>
@@ -80,15 +81,29 @@ TEST(PeriodicIo, LammpsDeckOfAPeriodicCell) {
   EXPECT_NE(shear_files[1].text.find("boundary p f p\n"), std::string::npos);
   EXPECT_NE(shear_files[1].text.find("wall/gran hooke/history"), std::string::npos);
   EXPECT_NE(shear_files[1].text.find(" yplane 0 10\n"), std::string::npos);
-  for (const fp::Simulator s : {fp::Simulator::liggghts, fp::Simulator::yade}) {
-    options.simulator = s;
-    try {
-      (void)fp::make_deck(torus, kCrossing, {}, options);
-      ADD_FAILURE() << fp::to_string(s) << " took a periodic cell";
-    } catch (const fp::OptionError& e) {
-      EXPECT_NE(std::string(e.what()).find("does not take a periodic cell"), std::string::npos) << e.what();
-    }
+  options.simulator = fp::Simulator::liggghts;
+  try {
+    (void)fp::make_deck(torus, kCrossing, {}, options);
+    ADD_FAILURE() << "the LIGGGHTS deck took a periodic cell";
+  } catch (const fp::OptionError& e) {
+    EXPECT_NE(std::string(e.what()).find("does not take a periodic cell"), std::string::npos) << e.what();
   }
+}
+
+TEST(PeriodicIo, YadeDeckOfAPeriodicCell) {
+  fp::DeckOptions options;
+  options.simulator = fp::Simulator::yade;
+  options.densities = {2500};
+  const fp::Domain torus = fp::Domain::periodic(fp::Box{0, 0, 10, 10}, fp::Periodicity::xy);
+  const std::string torus_script = fp::make_deck(torus, kCrossing, {}, options)[1].text;
+  EXPECT_NE(torus_script.find("O.periodic = True\nO.cell.setBox(LX, LY, 5 * HALF_HEIGHT)\n"), std::string::npos);
+  EXPECT_NE(torus_script.find("CELL = (0, 0, 10, 10)"), std::string::npos);
+  EXPECT_NE(torus_script.find("RINGS = []\n"), std::string::npos);  // no wall facets
+  EXPECT_EQ(torus_script.find("WALLS"), std::string::npos);
+  const fp::Domain shear = fp::Domain::periodic(fp::Box{0, 0, 10, 10}, fp::Periodicity::x);
+  const std::string shear_script = fp::make_deck(shear, kShear, {}, options)[1].text;
+  EXPECT_NE(shear_script.find("for (ax, ay), (bx, by) in WALLS:"), std::string::npos);
+  EXPECT_NE(shear_script.find("LY = CELL[3] - CELL[1] + 2 * HALF_HEIGHT"), std::string::npos);
 }
 
 }  // namespace

@@ -2,6 +2,7 @@
 // it, builds the wall facets from the domain's edges, holds the spheres in the plane and runs.
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "common/format.hpp"
 #include "common/stop.hpp"
@@ -42,9 +43,34 @@ std::vector<DeckFile> yade_deck(const Domain& domain, std::span<const Disk> disk
     py << (t == 0 ? "" : ", ") << format_double(p.area_density[t]);
   }
   py << "]  # mass per area, by type\n"
-     << "HALF_HEIGHT = " << format_double(2 * p.rmax) << "  # the facets' extent in z\n"
-     << "RINGS = [\n";
-  for (const Polygon& poly : domain.polygons()) {
+     << "HALF_HEIGHT = " << format_double(2 * p.rmax) << "  # the facets' extent in z\n";
+  const bool periodic = domain.periodicity() != Periodicity::none;
+  if (periodic) {
+    // Yade's periodic cell wraps all three axes, from the origin: the images of a disk are its
+    // translations by the periods whatever the origin, so the cell [xmin, xmax) needs no shift.
+    // z: 10 rmax, so that no sphere meets its own image and a facet spans under half of it.
+    // A shear cell's y period is its height plus 4 rmax (the walls keep the images apart), and
+    // its walls are facets in four pieces per side (a body must span under half of the cell).
+    const Box cell = domain.bbox();
+    const bool torus = domain.periodicity() == Periodicity::xy;
+    py << "CELL = (" << format_double(cell.xmin) << ", " << format_double(cell.ymin) << ", " << format_double(cell.xmax)
+       << ", " << format_double(cell.ymax) << ")  # the periodic cell "
+       << (torus ? "[xmin, xmax) x [ymin, ymax)\n" : "[xmin, xmax) x [ymin, ymax], walls at ymin and ymax\n")
+       << "LX = CELL[2] - CELL[0]\n"
+       << "LY = CELL[3] - CELL[1]" << (torus ? "" : " + 2 * HALF_HEIGHT") << "\n"
+       << "O.periodic = True\n"
+       << "O.cell.setBox(LX, LY, 5 * HALF_HEIGHT)\n";
+    if (torus) {
+      py << "RINGS = []\n";
+    } else {
+      py << "RINGS = []\n"
+         << "WALLS = [[(CELL[0] + k * LX / 4, y), (CELL[0] + (k + 1) * LX / 4, y)] for y in (CELL[1], CELL[3]) "
+            "for k in range(4)]\n";
+    }
+  } else {
+    py << "RINGS = [\n";
+  }
+  for (const Polygon& poly : periodic ? std::vector<Polygon>{} : domain.polygons()) {
     for (std::size_t r = 0; r <= poly.holes.size(); ++r) {
       const Ring& ring = r == 0 ? poly.outer : poly.holes[r - 1];
       py << "    [";
@@ -55,8 +81,7 @@ std::vector<DeckFile> yade_deck(const Domain& domain, std::span<const Disk> disk
       py << "],\n";
     }
   }
-  py << "]\n\n"
-     << "for rho in DENSITY:\n"
+  py << (periodic ? "\n" : "]\n\n") << "for rho in DENSITY:\n"
      << "    O.materials.append(FrictMat(young=" << format_double(young)
      << ", poisson=0.3, frictionAngle=math.atan(0.5), density=rho))\n"
      << "wall_material = O.materials.append(FrictMat(young=" << format_double(young)
@@ -75,7 +100,15 @@ std::vector<DeckFile> yade_deck(const Domain& domain, std::span<const Disk> disk
      << "        a0, b0 = (ax, ay, -HALF_HEIGHT), (bx, by, -HALF_HEIGHT)\n"
      << "        a1, b1 = (ax, ay, HALF_HEIGHT), (bx, by, HALF_HEIGHT)\n"
      << "        O.bodies.append(utils.facet([a0, b0, b1], fixed=True, material=wall_material))\n"
-     << "        O.bodies.append(utils.facet([a0, b1, a1], fixed=True, material=wall_material))\n\n"
+     << "        O.bodies.append(utils.facet([a0, b1, a1], fixed=True, material=wall_material))\n";
+  if (domain.periodicity() == Periodicity::x) {
+    py << "for (ax, ay), (bx, by) in WALLS:\n"
+       << "    a0, b0 = (ax, ay, -HALF_HEIGHT), (bx, by, -HALF_HEIGHT)\n"
+       << "    a1, b1 = (ax, ay, HALF_HEIGHT), (bx, by, HALF_HEIGHT)\n"
+       << "    O.bodies.append(utils.facet([a0, b0, b1], fixed=True, material=wall_material))\n"
+       << "    O.bodies.append(utils.facet([a0, b1, a1], fixed=True, material=wall_material))\n";
+  }
+  py << "\n"
      << "O.engines = [\n"
      << "    ForceResetter(),\n"
      << "    InsertionSortCollider([Bo1_Sphere_Aabb(), Bo1_Facet_Aabb()]),\n"
@@ -85,7 +118,12 @@ std::vector<DeckFile> yade_deck(const Domain& domain, std::span<const Disk> disk
      << "    NewtonIntegrator(damping=0.3, gravity=(0, " << format_double(-p.gravity) << ", 0)),\n"
      << "]\n"
      << "O.dt = " << format_double(p.dt_hooke) << "\n"
-     << "O.run(STEPS, True)\n"
+     << (periodic ? "O.run(1, True)\n"
+                    "# Contacts after the first step: 0 for a certified packing (across the periodic sides too).\n"
+                    "print('FRONTPACK_START_CONTACTS %d' % sum(1 for i in O.interactions if i.isReal))\n"
+                    "if STEPS > 1:\n"
+                    "    O.run(STEPS - 1, True)\n"
+                  : "O.run(STEPS, True)\n")
      << "with open('final.txt', 'w') as f:\n"
      << "    for b in O.bodies:\n"
      << "        if isinstance(b.shape, Sphere):\n"

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
-"""Runs the LAMMPS deck of a periodic cell in the real LAMMPS and checks it.
+"""Runs the deck of a periodic cell in the real LAMMPS or Yade and checks it.
 
-    check_periodic_deck.py xy|x HELPER TOOL WORKDIR
+    check_periodic_deck.py lammps|yade xy|x HELPER TOOL WORKDIR
 
 HELPER (frontpack_periodic_deck) writes a dense periodic packing (fill's closed form in the cell,
 bidisperse 1:1.4, certified exactly) and its LAMMPS deck: boundary p p p (xy) or
@@ -10,8 +10,14 @@ the CSV puts it and feels its weight and nothing else (fx = 0, fy = -m g: no con
 seams included); at step 1000 no atom is lost; `frontpack check --periodic` certifies the dump's
 first snapshot. Then the same with one disk moved across the seam into its neighbour's image by 1%
 of a radius: LAMMPS must see that contact at step 0 and the check must name the pair (exit 6), so
-the test can fail. Exit 0 pass, 1 fail, 77 LAMMPS is not installed (a skip), unless
-FRONTPACK_REQUIRE_READERS=1.
+the test can fail.
+
+Yade (`yade -n -x run.py 500`, O.periodic): the script counts the real interactions after its first
+step (0 for the packing, across the periodic sides too; some for the planted overlap), every
+sphere is there at the end and, in a shear cell, between the walls (up to 5% of rmin);
+`frontpack check --periodic` certifies the deck's packing.txt (and names the planted pair).
+
+Exit 0 pass, 1 fail, 77 the simulator is not installed (a skip), unless FRONTPACK_REQUIRE_READERS=1.
 """
 import os
 import shutil
@@ -25,10 +31,53 @@ from reader_support import read_csv as read_any_csv
 STEPS = 1000
 
 
+def make_yade(helper, axes, kind, work):
+    out = os.path.join(work, kind)
+    shutil.rmtree(out, ignore_errors=True)
+    lines = run([helper, "yade", axes, kind, out], work).splitlines()
+    cell, planted = lines[0], (lines[1] if len(lines) > 1 else "")
+    deck = os.path.join(out, "deck")
+    log = run([shutil.which("yade"), "-n", "-x", "run.py", "500"], deck)
+    if "FRONTPACK_DONE 500 steps" not in log:
+        fail("yade did not finish 500 steps:\n" + log[-3000:])
+    contacts = int(log.split("FRONTPACK_START_CONTACTS ")[1].split()[0])
+    want = read_any_csv(os.path.join(out, "packing.csv"), header="x,y,r,type", at_least=400)
+    with open(os.path.join(deck, "final.txt"), encoding="ascii") as f:
+        end = [tuple(float(v) for v in line.split()) for line in f.read().splitlines()]
+    if len(end) != len(want):
+        fail("yade: %d spheres at the end, frontpack wrote %d" % (len(end), len(want)))
+    return deck, cell, planted, want, contacts, end
+
+
+def main_yade(axes, helper, tool, work):
+    deck, cell, _, want, contacts, end = make_yade(helper, axes, "clean", work)
+    if contacts != 0:
+        fail("yade: %d contacts after the first step: an overlap Yade sees" % contacts)
+    if axes == "x":
+        ymin, ymax = (float(v) for v in cell.split(",")[1::2])
+        rmin = min(w[2] for w in want)
+        out = [e for e in end if e[1] - e[2] < ymin - 0.05 * rmin or e[1] + e[2] > ymax + 0.05 * rmin]
+        if out:
+            fail("yade: %d spheres through the shear cell's walls, e.g. %r" % (len(out), out[:3]))
+    check = [tool, "check", "--periodic", cell, "--periodic-axes", axes, "packing.txt"]
+    run(check, deck)
+    print("yade O.periodic (%s): %d spheres, no contact after the first step, none lost in 500 steps%s; "
+          "packing.txt certified by frontpack check --periodic"
+          % (axes, len(want), ", all between the walls" if axes == "x" else ""))
+    deck, cell, planted, want, contacts, end = make_yade(helper, axes, "overlap", work)
+    if contacts == 0:
+        fail("yade: the planted overlap across the seam made no contact after the first step")
+    result = run(check + ["--all"], deck, expect=6)
+    if "overlap %s\n" % planted not in result:
+        fail("check did not name the planted pair %s:\n%s" % (planted, result[-2000:]))
+    print("yade O.periodic (%s): the planted overlap across the seam makes %d contacts and is named by check"
+          % (axes, contacts))
+
+
 def make(helper, axes, kind, work):
     out = os.path.join(work, kind)
     shutil.rmtree(out, ignore_errors=True)
-    lines = run([helper, axes, kind, out], work).splitlines()
+    lines = run([helper, "lammps", axes, kind, out], work).splitlines()
     cell, planted = lines[0], (lines[1] if len(lines) > 1 else "")
     run([shutil.which("lmp"), "-in", "in.frontpack", "-log", "none", "-nocite"], os.path.join(out, "deck"))
     want = read_any_csv(os.path.join(out, "packing.csv"), header="x,y,r,type", at_least=400)
@@ -51,10 +100,14 @@ def contacts_at_start(start, want, gravity):
 
 
 def main():
-    axes, helper, tool, work = sys.argv[1:5]
-    if shutil.which("lmp") is None:
-        missing("lmp")
+    simulator, axes, helper, tool, work = sys.argv[1:6]
+    program = {"lammps": "lmp", "yade": "yade"}[simulator]
+    if shutil.which(program) is None:
+        missing(program)
     os.makedirs(work, exist_ok=True)
+    if simulator == "yade":
+        main_yade(axes, helper, tool, work)
+        return
 
     out, cell, _, want, frames = make(helper, axes, "clean", work)
     if sorted(frames) != list(range(0, STEPS + 1, STEPS // 10)):

@@ -1,5 +1,5 @@
-// Writes a dense periodic packing and its LAMMPS deck, for the test that runs the deck in the real
-// LAMMPS (check_periodic_deck.py): frontpack_periodic_deck xy|x clean|overlap OUTDIR
+// Writes a dense periodic packing and its deck, for the test that runs the deck in the real LAMMPS
+// or Yade (check_periodic_deck.py): frontpack_periodic_deck lammps|yade xy|x clean|overlap OUTDIR
 // -> OUTDIR/packing.csv (x,y,r,type), OUTDIR/deck/ (make_deck, 1000 steps); prints the cell as
 // XMIN,YMIN,XMAX,YMAX on the first line, and for `overlap` the planted pair "I J" on the second.
 // The packing is fill()'s closed form in the periodic cell, bidisperse 1:1.4 (types 1 and 2 by
@@ -20,13 +20,14 @@
 namespace fp = frontpack;
 
 int main(int argc, char** argv) {
-  if (argc != 4) {
-    std::cerr << "usage: frontpack_periodic_deck xy|x clean|overlap OUTDIR\n";
+  if (argc != 5) {
+    std::cerr << "usage: frontpack_periodic_deck lammps|yade xy|x clean|overlap OUTDIR\n";
     return 1;
   }
   try {
-    const bool torus = std::string(argv[1]) == "xy";
-    const bool overlap = std::string(argv[2]) == "overlap";
+    const fp::Simulator simulator = fp::simulator_from_name(argv[1]);
+    const bool torus = std::string(argv[2]) == "xy";
+    const bool overlap = std::string(argv[3]) == "overlap";
     // Bounds that are not round numbers: the periods are not doubles' exact differences of 0.
     const fp::Box cell{0.1, -0.03, 0.1 + 0.24, -0.03 + 0.18};
     const fp::Domain domain = fp::Domain::periodic(cell, torus ? fp::Periodicity::xy : fp::Periodicity::x);
@@ -90,13 +91,13 @@ int main(int argc, char** argv) {
       }
       planted = std::to_string(std::min(i, j)) + " " + std::to_string(std::max(i, j));
     }
-    const std::filesystem::path dir = argv[3];
+    const std::filesystem::path dir = argv[4];
     std::filesystem::create_directories(dir / "deck");
     fp::WriteOptions write;
     write.types = types;
     fp::write_file(dir / "packing.csv", fp::Format::csv, domain, disks, write);
     fp::DeckOptions deck;
-    deck.simulator = fp::Simulator::lammps;
+    deck.simulator = simulator;
     deck.densities = {2500, 7800};
     deck.steps = 1000;
     for (const fp::DeckFile& f : fp::make_deck(domain, disks, types, deck)) {

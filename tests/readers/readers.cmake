@@ -91,24 +91,28 @@ if(FRONTPACK_BUILD_TOOLS)
   endforeach()
 endif()
 
-# Periodic cells: the LAMMPS deck of a dense periodic packing (boundary p p p, and p f p for a
-# shear cell) runs in the real lmp: no contact at step 0, no atom lost, the first snapshot
-# certified by check --periodic, and a planted overlap across the seam seen by both
-# (tests/readers/check_periodic_deck.py). Skip-or-fail as above.
+# Periodic cells: the LAMMPS and Yade decks of a dense periodic packing (LAMMPS boundary p p p, and
+# p f p for a shear cell; Yade O.periodic) run in the real programs: no contact at the start, none
+# lost, the packing certified by check --periodic, and a planted overlap across the seam seen by
+# the program and by the check (tests/readers/check_periodic_deck.py). Skip-or-fail as above.
 add_executable(frontpack_periodic_deck ${CMAKE_CURRENT_LIST_DIR}/periodic_deck.cpp)
 target_link_libraries(frontpack_periodic_deck PRIVATE frontpack::frontpack)
 frontpack_target_settings(frontpack_periodic_deck)
 if(FRONTPACK_BUILD_TOOLS)
-  foreach(axes xy x)
+  foreach(case lammps:xy lammps:x yade:xy yade:x)
+    string(REPLACE ":" ";" parts "${case}")
+    list(GET parts 0 simulator)
+    list(GET parts 1 axes)
+    set(name decks.${simulator}.periodic_${axes})
     if(frontpack_reader_python)
-      add_test(NAME decks.lammps.periodic_${axes}
-        COMMAND ${frontpack_reader_python} ${CMAKE_CURRENT_LIST_DIR}/check_periodic_deck.py ${axes}
+      add_test(NAME ${name}
+        COMMAND ${frontpack_reader_python} ${CMAKE_CURRENT_LIST_DIR}/check_periodic_deck.py ${simulator} ${axes}
                 $<TARGET_FILE:frontpack_periodic_deck> $<TARGET_FILE:frontpack_tool>
-                ${CMAKE_CURRENT_BINARY_DIR}/decks/periodic_${axes})
+                ${CMAKE_CURRENT_BINARY_DIR}/decks/periodic_${simulator}_${axes})
     else()
-      add_test(NAME decks.lammps.periodic_${axes}
+      add_test(NAME ${name}
         COMMAND sh -c "echo 'python3 is not installed'; test \"$FRONTPACK_REQUIRE_READERS\" = 1 && exit 1; exit 77")
     endif()
-    set_tests_properties(decks.lammps.periodic_${axes} PROPERTIES SKIP_RETURN_CODE 77 TIMEOUT 300 LABELS readers)
+    set_tests_properties(${name} PROPERTIES SKIP_RETURN_CODE 77 TIMEOUT 300 LABELS readers)
   endforeach()
 endif()
