@@ -78,10 +78,10 @@ struct DeckFile {
 /// The names of the files make_deck writes for `simulator`, in its order.
 [[nodiscard]] std::vector<std::string> deck_file_names(Simulator simulator);
 
-/// The deck for `options.simulator`. A periodic domain (Domain::periodic) takes the LAMMPS and
-/// Yade decks (LIGGGHTS: OptionError). LAMMPS: the data file's box is the cell, the script says
-/// `boundary p p p` (xy) or `boundary p f p` (x, whose bottom and top become wall/gran planes), no
-/// wall disks. Yade: `O.periodic = True` with the cell's periods (a shear cell's walls as facets). `types` is empty
+/// The deck for `options.simulator`. A periodic domain (Domain::periodic): LAMMPS and LIGGGHTS get
+/// the cell as the data file's box and `boundary p p p` (xy) or `boundary p f p` (x, whose bottom
+/// and top become wall/gran planes), no wall disks and no mesh; Yade gets `O.periodic = True` with
+/// the cell's periods (a shear cell's walls as facets). docs/simulators.md, "Periodic cells". `types` is empty
 /// (every disk type 1) or holds one type >= 1 per disk. Throws OptionError (densities, thickness, gravity, walls),
 /// CancelledError.
 [[nodiscard]] std::vector<DeckFile> make_deck(const Domain& domain, std::span<const Disk> disks,

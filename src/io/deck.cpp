@@ -167,10 +167,6 @@ DeckPhysics deck_physics(const Domain& domain, std::span<const Disk> disks, std:
 
 std::vector<DeckFile> make_deck(const Domain& domain, std::span<const Disk> disks, std::span<const std::uint32_t> types,
                                 const DeckOptions& options) {
-  if (domain.periodicity() != Periodicity::none && options.simulator == Simulator::liggghts) {
-    throw OptionError(std::string("the ") + to_string(options.simulator) +
-                      " deck does not take a periodic cell; the lammps and yade decks do");
-  }
   const detail::DeckPhysics physics = detail::deck_physics(domain, disks, types, options);
   std::vector<DeckFile> files;
   switch (options.simulator) {

@@ -1,5 +1,5 @@
 // The LIGGGHTS deck: a data file with the packed disks, the domain's edges extruded to an STL
-// mesh for fix mesh/surface + fix wall/gran, and an input script.
+// mesh for fix mesh/surface + fix wall/gran, and an input script (a periodic cell: no mesh).
 //
 // LIGGGHTS-PUBLIC 3.8.0 (Debian) runs `dimension 2` with `fix enforce2d` and mesh walls, but its
 // neighbour lists fail an assertion (region_neighbor_list_I.h) when the periodic z extent is
@@ -82,11 +82,16 @@ std::vector<DeckFile> liggghts_deck(const Domain& domain, std::span<const Disk> 
   const double half_z = 10 * p.rmax;
   const Box b = domain.bbox();
   const double margin = 2 * p.rmax;
-  const Box box{b.xmin - margin, b.ymin - margin, b.xmax + margin, b.ymax + margin};
+  // A periodic cell is the box itself (boundary p p p, or p f p with the shear cell's walls as
+  // two primitive wall planes at ymin and ymax, on the box's faces): no mesh.
+  const bool periodic = domain.periodicity() != Periodicity::none;
+  const bool torus = domain.periodicity() == Periodicity::xy;
+  const Box box = periodic ? b : Box{b.xmin - margin, b.ymin - margin, b.xmax + margin, b.ymax + margin};
 
   LammpsOptions data_options;
   data_options.type_densities = p.area_density;
   data_options.atom_types = wall_type;
+  data_options.periodicity = domain.periodicity();
   std::ostringstream data_stream;
   std::vector<std::uint32_t> all_types(types.begin(), types.end());
   if (all_types.empty()) {
@@ -104,14 +109,18 @@ std::vector<DeckFile> liggghts_deck(const Domain& domain, std::span<const Disk> 
   const std::uint64_t every = std::max<std::uint64_t>(1, options.steps / 10);
   std::ostringstream in;
   in << "# LIGGGHTS input written by frontpack " << version_string << " (run: liggghts -in in.frontpack)\n"
-     << "# " << disks.size() << " disks of types 1.." << p.types << "; the domain's edges are the mesh walls.stl"
-     << " (type " << w << ").\n"
+     << "# " << disks.size() << " disks of types 1.." << p.types
+     << (!periodic ? "; the domain's edges are the mesh walls.stl (type " + w + ").\n"
+         : torus   ? " in the periodic cell (the box).\n"
+                   : " in the cell periodic in x (the box); its bottom and top are wall planes (type " + w + ").\n")
      << "# Units: those of the domain and densities (SI: m, kg, s). " << mass_note(options)
      << "\n# (LIGGGHTS's `set density` in 2D sets mass = density * pi r^2).\n"
      << "atom_style granular\n"
      << "atom_modify map array\n"
      << "dimension 2\n"
-     << "boundary f f p\n"
+     << (!periodic ? "boundary f f p\n"
+         : torus   ? "boundary p p p\n"
+                   : "boundary p f p\n")
      << "newton off\n"
      << "communicate single vel yes\n"
      << "units si\n"
@@ -137,10 +146,17 @@ std::vector<DeckFile> liggghts_deck(const Domain& domain, std::span<const Disk> 
      << format_double(p.mass_min / 2) << ")\n"
      << "# at the Hertz stiffness k = 2 E* sqrt(R* d) of that overlap, / 50.\n"
      << "timestep " << format_double(p.dt_hertz) << "\n"
-     << "fix gravity all gravity " << format_double(p.gravity) << " vector 0 -1 0\n"
-     << "fix walls all mesh/surface file walls.stl type " << w << "\n"
-     << "fix wall all wall/gran model hertz tangential history mesh n_meshes 1 meshes walls\n"
-     << "fix move all nve/sphere\n"
+     << "fix gravity all gravity " << format_double(p.gravity) << " vector 0 -1 0\n";
+  if (!periodic) {
+    in << "fix walls all mesh/surface file walls.stl type " << w << "\n"
+       << "fix wall all wall/gran model hertz tangential history mesh n_meshes 1 meshes walls\n";
+  } else if (!torus) {
+    in << "fix wall all wall/gran model hertz tangential history primitive type " << w << " yplane "
+       << format_double(b.ymin) << "\n"
+       << "fix wall_top all wall/gran model hertz tangential history primitive type " << w << " yplane "
+       << format_double(b.ymax) << "\n";
+  }
+  in << "fix move all nve/sphere\n"
      << "fix plane all enforce2d\n"
      << "compute ke all ke\n"
      << "thermo_style custom step atoms c_ke\n"
@@ -151,6 +167,9 @@ std::vector<DeckFile> liggghts_deck(const Domain& domain, std::span<const Disk> 
      // the dump's numbers are the doubles (frontpack check on its first snapshot certifies).
      << "dump_modify free sort id format \"%d %d %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g\"\n"
      << "run " << options.steps << "\n";
+  if (periodic) {
+    return {{"deck.data", data}, {"in.frontpack", in.str()}};
+  }
   return {
       {"deck.data", data}, {"walls.stl", edge_mesh(domain, 0.9 * half_z, options.stop)}, {"in.frontpack", in.str()}};
 }

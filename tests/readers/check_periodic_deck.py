@@ -1,11 +1,11 @@
 #!/usr/bin/env python3
-"""Runs the deck of a periodic cell in the real LAMMPS or Yade and checks it.
+"""Runs the deck of a periodic cell in the real LAMMPS, LIGGGHTS or Yade and checks it.
 
-    check_periodic_deck.py lammps|yade xy|x HELPER TOOL WORKDIR
+    check_periodic_deck.py lammps|liggghts|yade xy|x HELPER TOOL WORKDIR
 
 HELPER (frontpack_periodic_deck) writes a dense periodic packing (fill's closed form in the cell,
-bidisperse 1:1.4, certified exactly) and its LAMMPS deck: boundary p p p (xy) or
-p f p with wall planes (x). `lmp` runs it, 1000 steps under gravity. At step 0 every atom is where
+bidisperse 1:1.4, certified exactly) and its deck: boundary p p p (xy) or
+p f p with wall planes (x). `lmp` (or `liggghts`) runs it, 1000 steps under gravity. At step 0 every atom is where
 the CSV puts it and feels its weight and nothing else (fx = 0, fy = -m g: no contact, across the
 seams included); at step 1000 no atom is lost; `frontpack check --periodic` certifies the dump's
 first snapshot. Then the same with one disk moved across the seam into its neighbour's image by 1%
@@ -74,12 +74,15 @@ def main_yade(axes, helper, tool, work):
           % (axes, contacts))
 
 
-def make(helper, axes, kind, work):
+def make(simulator, helper, axes, kind, work):
     out = os.path.join(work, kind)
     shutil.rmtree(out, ignore_errors=True)
-    lines = run([helper, "lammps", axes, kind, out], work).splitlines()
+    lines = run([helper, simulator, axes, kind, out], work).splitlines()
     cell, planted = lines[0], (lines[1] if len(lines) > 1 else "")
-    run([shutil.which("lmp"), "-in", "in.frontpack", "-log", "none", "-nocite"], os.path.join(out, "deck"))
+    if simulator == "lammps":
+        run([shutil.which("lmp"), "-in", "in.frontpack", "-log", "none", "-nocite"], os.path.join(out, "deck"))
+    else:
+        run([shutil.which("liggghts"), "-in", "in.frontpack", "-log", "none"], os.path.join(out, "deck"))
     want = read_any_csv(os.path.join(out, "packing.csv"), header="x,y,r,type", at_least=400)
     frames = read_dump(os.path.join(out, "deck", "free.lammpstrj"))
     return out, cell, planted, want, frames
@@ -101,7 +104,7 @@ def contacts_at_start(start, want, gravity):
 
 def main():
     simulator, axes, helper, tool, work = sys.argv[1:6]
-    program = {"lammps": "lmp", "yade": "yade"}[simulator]
+    program = {"lammps": "lmp", "liggghts": "liggghts", "yade": "yade"}[simulator]
     if shutil.which(program) is None:
         missing(program)
     os.makedirs(work, exist_ok=True)
@@ -109,7 +112,7 @@ def main():
         main_yade(axes, helper, tool, work)
         return
 
-    out, cell, _, want, frames = make(helper, axes, "clean", work)
+    out, cell, _, want, frames = make(simulator, helper, axes, "clean", work)
     if sorted(frames) != list(range(0, STEPS + 1, STEPS // 10)):
         fail("dump timesteps %r, expected 0 to %d every %d" % (sorted(frames), STEPS, STEPS // 10))
     touched = contacts_at_start(frames[0], want, 9.81)
@@ -126,10 +129,10 @@ def main():
         fail("in.frontpack has no %r" % boundary)
     check = [tool, "check", "--periodic", cell, "--periodic-axes", axes, "free.lammpstrj", "--timestep", "0"]
     run(check, deck)
-    print("lammps %s: %d atoms, step 0 contact-free (each feels only its weight), none lost in %d steps, "
-          "step 0 certified by frontpack check --periodic" % (boundary, len(want), STEPS))
+    print("%s %s: %d atoms, step 0 contact-free (each feels only its weight), none lost in %d steps, "
+          "step 0 certified by frontpack check --periodic" % (simulator, boundary, len(want), STEPS))
 
-    out, cell, planted, want, frames = make(helper, axes, "overlap", work)
+    out, cell, planted, want, frames = make(simulator, helper, axes, "overlap", work)
     i, j = (int(v) for v in planted.split())
     touched = contacts_at_start(frames[0], want, 9.81)
     if i + 1 not in touched or j + 1 not in touched:
@@ -138,8 +141,8 @@ def main():
     result = run(check + ["--all"], os.path.join(out, "deck"), expect=6)
     if "overlap %d %d\n" % (i, j) not in result:
         fail("check did not name the planted pair %d %d:\n%s" % (i, j, result[-2000:]))
-    print("lammps %s: the planted overlap across the seam is seen by LAMMPS (atoms %r) and by check" %
-          (boundary, touched))
+    print("%s %s: the planted overlap across the seam is seen by the simulator (atoms %r) and by check" %
+          (simulator, boundary, touched))
 
 
 if __name__ == "__main__":

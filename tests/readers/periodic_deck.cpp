@@ -1,5 +1,6 @@
-// Writes a dense periodic packing and its deck, for the test that runs the deck in the real LAMMPS
-// or Yade (check_periodic_deck.py): frontpack_periodic_deck lammps|yade xy|x clean|overlap OUTDIR
+// Writes a dense periodic packing and its deck, for the test that runs the deck in the real
+// LAMMPS, LIGGGHTS or Yade (check_periodic_deck.py):
+//   frontpack_periodic_deck lammps|liggghts|yade xy|x clean|overlap OUTDIR
 // -> OUTDIR/packing.csv (x,y,r,type), OUTDIR/deck/ (make_deck, 1000 steps); prints the cell as
 // XMIN,YMIN,XMAX,YMAX on the first line, and for `overlap` the planted pair "I J" on the second.
 // The packing is fill()'s closed form in the periodic cell, bidisperse 1:1.4 (types 1 and 2 by
@@ -21,7 +22,7 @@ namespace fp = frontpack;
 
 int main(int argc, char** argv) {
   if (argc != 5) {
-    std::cerr << "usage: frontpack_periodic_deck lammps|yade xy|x clean|overlap OUTDIR\n";
+    std::cerr << "usage: frontpack_periodic_deck lammps|liggghts|yade xy|x clean|overlap OUTDIR\n";
     return 1;
   }
   try {

@@ -91,15 +91,15 @@ if(FRONTPACK_BUILD_TOOLS)
   endforeach()
 endif()
 
-# Periodic cells: the LAMMPS and Yade decks of a dense periodic packing (LAMMPS boundary p p p, and
-# p f p for a shear cell; Yade O.periodic) run in the real programs: no contact at the start, none
+# Periodic cells: the LAMMPS, LIGGGHTS and Yade decks of a dense periodic packing (boundary p p p,
+# and p f p for a shear cell; Yade O.periodic) run in the real programs: no contact at the start, none
 # lost, the packing certified by check --periodic, and a planted overlap across the seam seen by
 # the program and by the check (tests/readers/check_periodic_deck.py). Skip-or-fail as above.
 add_executable(frontpack_periodic_deck ${CMAKE_CURRENT_LIST_DIR}/periodic_deck.cpp)
 target_link_libraries(frontpack_periodic_deck PRIVATE frontpack::frontpack)
 frontpack_target_settings(frontpack_periodic_deck)
 if(FRONTPACK_BUILD_TOOLS)
-  foreach(case lammps:xy lammps:x yade:xy yade:x)
+  foreach(case lammps:xy lammps:x liggghts:xy liggghts:x yade:xy yade:x)
     string(REPLACE ":" ";" parts "${case}")
     list(GET parts 0 simulator)
     list(GET parts 1 axes)
