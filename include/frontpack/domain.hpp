@@ -100,11 +100,15 @@ class Domain {
   /// Largest |coordinate| of any vertex: the scale of the floating-point error of constructions.
   [[nodiscard]] double max_abs_coordinate() const noexcept;
 
-  /// Exact point location.
+  /// Exact point location. A periodic cell: `inside` in the half-open cell (Periodicity::x:
+  /// strictly between the walls), `boundary` on a wall (Periodicity::x: y = ymin or ymax with
+  /// xmin <= x < xmax), `outside` otherwise; a periodic side is no boundary.
   [[nodiscard]] Location locate(Point p) const noexcept;
 
   /// Exact: whether the closed disk lies in the closed domain (touching the boundary counts as
-  /// inside). A disk with a negative or NaN radius is never inside.
+  /// inside). A disk with a negative or NaN radius is never inside. A periodic cell: whether the
+  /// centre lies in the half-open cell and, with Periodicity::x, the closed disk between the walls
+  /// (decided exactly; an infinite radius is never inside).
   [[nodiscard]] bool contains(const Disk& disk) const noexcept;
 
   /// Batch form of contains(): out[i] = contains(disks[i]). Uses the domain's spatial index, so

@@ -18,10 +18,13 @@
 // each axis. The grid's cells are at least 2 rmax + 2 tol wide, so such a pair lies in the same or
 // in neighbouring cells, cyclically on a periodic axis (the cell index of p is computed with an
 // error far below tol); with fewer than 3 cells along an axis the neighbours coincide and are
-// visited once.
+// visited once. On a shear cell's walled axis a centre beyond a wall is clamped into the first or
+// last row: clamping is monotone and never moves two rows apart, so neighbours stay neighbours.
 //
 // Linear time: cells hold O(1) disks for a packing (cell side about 2 rmax, or larger so that
-// there are at most as many cells as disks); every disk visits at most 9 cells.
+// there are at most as many cells as disks); every disk visits at most 9 cells. (A few disks far
+// larger than the rest make every cell large: the cost then grows with the disks per cell, as
+// for any uniform grid.)
 #include "certify/periodic_pass.hpp"
 
 #include <algorithm>
@@ -167,34 +170,22 @@ void periodic_overlapping_pairs(const Domain& domain, std::span<const Disk> disk
   ax.wraps = true;
   ax.lo = cell.xmin;
   ax.period = lx;
+  // y: the cell's rows; on a walled axis a centre beyond a wall falls in the first or last row
+  // (clamping the row index is monotone and never pulls two rows apart, so neighbours stay
+  // neighbours).
   Axis ay;
   ay.wraps = wraps_y;
-  double y_extent = ly;
-  if (wraps_y) {
-    ay.lo = cell.ymin;
-    ay.period = ly;
-  } else {
-    double top = placed.front().p.y;
-    ay.lo = top;
-    for (const Placed& w : placed) {
-      ay.lo = std::min(ay.lo, w.p.y);
-      top = std::max(top, w.p.y);
-    }
-    y_extent = top - ay.lo;
-  }
-  const double sparse = std::sqrt(lx * std::max(y_extent, 2 * rmax) / static_cast<double>(placed.size()));
+  ay.lo = cell.ymin;
+  ay.period = ly;
+  const double sparse = std::sqrt(lx * ly / static_cast<double>(placed.size()));
   double h = (2 * rmax + 2 * tol) * (1 + 0x1p-20);
   if (std::isfinite(sparse) && sparse > h) {
     h = sparse;
   }
   ax.n = cells_along(lx, h);
   ax.scale = static_cast<double>(ax.n) / lx;
-  ay.n = wraps_y ? cells_along(ly, h) : std::min<std::size_t>(cells_along(y_extent, h) + 1, std::size_t{1} << 24);
-  ay.scale = wraps_y ? static_cast<double>(ay.n) / ly : 1 / h;
-  if (!std::isfinite(ay.scale)) {
-    ay.scale = 0;  // radii beyond the doubles' range: one row
-    ay.n = 1;
-  }
+  ay.n = cells_along(ly, h);
+  ay.scale = static_cast<double>(ay.n) / ly;
 
   // Counting sort by cell, stable.
   const std::size_t cells = ax.n * ay.n;
