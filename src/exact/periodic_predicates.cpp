@@ -1,5 +1,7 @@
 #include "exact/periodic_predicates.hpp"
 
+#include <type_traits>
+
 #include <algorithm>
 #include <cmath>
 
@@ -91,7 +93,14 @@ int wrapped_side(double v, std::int64_t k, double lo, double hi) {
 bool between_walls(double v, double r, double lo, double hi) {
   return filtered<bool>([&](auto tag) {
     using NT = decltype(tag);
-    return (NT(lo) <= NT(v) - NT(r)) & (NT(v) + NT(r) <= NT(hi));
+    const auto above_floor = NT(lo) <= NT(v) - NT(r);
+    const auto below_ceiling = NT(v) + NT(r) <= NT(hi);
+    // Intervals give CGAL::Uncertain<bool>, whose & is three-valued; exact numbers give bool.
+    if constexpr (std::is_same_v<std::decay_t<decltype(above_floor)>, bool>) {
+      return above_floor && below_ceiling;
+    } else {
+      return above_floor & below_ceiling;
+    }
   });
 }
 
