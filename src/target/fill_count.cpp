@@ -54,11 +54,7 @@ Packing fill_to_count(const Domain& domain, const FillOptions& options, const Pl
   if (p.disks.size() > n) {
     p.disks.resize(n);
   }
-  double a = 0;
-  for (const Disk& d : p.disks) {
-    a += std::numbers::pi * d.radius * d.radius;
-  }
-  t.fraction_achieved = a / t.area_filled;
+  t.fraction_achieved = disk_area(p.disks) / t.area_filled;
   p.target = t;
   return p;
 }

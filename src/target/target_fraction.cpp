@@ -26,14 +26,6 @@ constexpr double kAimBelow = 0.0015;
 // the local density what it takes from the mean).
 constexpr double kExcess = 0.008;
 
-double disk_area(const std::vector<Disk>& disks) {
-  double a = 0;
-  for (const Disk& d : disks) {
-    a += std::numbers::pi * d.radius * d.radius;
-  }
-  return a;
-}
-
 }  // namespace
 
 Packing fill_to_fraction(const Domain& domain, const FillOptions& options, const PlainFill& plain) {

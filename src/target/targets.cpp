@@ -44,6 +44,8 @@ bool below_level(const Disk& d, double level) {
   return s < level || (s == level && e <= 0);
 }
 
+}  // namespace
+
 double disk_area(const std::vector<Disk>& disks) {
   double a = 0;
   for (const Disk& d : disks) {
@@ -51,8 +53,6 @@ double disk_area(const std::vector<Disk>& disks) {
   }
   return a;
 }
-
-}  // namespace
 
 bool has_target(const FillOptions& options) noexcept {
   return options.fraction.has_value() || options.count > 0 || options.height.has_value();

@@ -5,6 +5,7 @@
 
 #include <cstddef>
 #include <functional>
+#include <vector>
 
 #include "frontpack/fill.hpp"
 
@@ -13,6 +14,9 @@ namespace frontpack::detail {
 /// The plain fill: `options` without targets, its generators stopped after `generation_cap`
 /// disks generated (culled ones included; at most options.max_disks).
 using PlainFill = std::function<Packing(const Domain&, const FillOptions&, std::size_t generation_cap)>;
+
+/// The disks' total area (pi r^2 summed in order), shared by the targets' fraction figures.
+[[nodiscard]] double disk_area(const std::vector<Disk>& disks);
 
 /// Whether options ask for a target.
 [[nodiscard]] bool has_target(const FillOptions& options) noexcept;
