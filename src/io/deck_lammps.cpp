@@ -12,6 +12,24 @@ namespace frontpack::detail {
 
 namespace {
 
+// The script's end, the same for walled and periodic decks: gravity on the free disks, 2D
+// integration, the timestep, thermo output, the 17-digit dump and the run.
+void write_motion_and_run(std::ostream& in, const DeckPhysics& p, std::uint64_t steps) {
+  const std::uint64_t every = std::max<std::uint64_t>(1, steps / 10);
+  in << "fix gravity free gravity " << format_double(p.gravity) << " vector 0 -1 0\n"
+     << "fix move free nve/sphere disc\n"
+     << "fix plane all enforce2d\n"
+     << "# Timestep: the contact time pi sqrt(m_eff / kn) of the two lightest disks (m_eff = "
+     << format_double(p.mass_min / 2) << ") / 50.\n"
+     << "timestep " << format_double(p.dt_hooke) << "\n"
+     << "compute ke free ke\n"
+     << "thermo_style custom step atoms c_ke\n"
+     << "thermo " << every << "\n"
+     << "dump free free custom " << every << " free.lammpstrj id type radius mass x y vx vy fx fy\n"
+     << "dump_modify free sort id format float %.17g\n"
+     << "run " << steps << "\n";
+}
+
 // A periodic cell: the box is the cell itself (boundary p p p, or p f p with the shear cell's
 // walls as two frictional wall planes at ymin and ymax, fix wall/gran: exact flat walls, no wall
 // disks); no wall disks in a periodic direction.
@@ -32,7 +50,6 @@ std::vector<DeckFile> periodic_lammps_deck(const Domain& domain, std::span<const
   write_lammps(data, disks, all_types, cell, data_options, options.stop);
 
   const std::string free_types = p.types == 1 ? std::string("1") : "1.." + std::to_string(p.types);
-  const std::uint64_t every = std::max<std::uint64_t>(1, options.steps / 10);
   const std::string cell_text = format_double(cell.xmin) + "," + format_double(cell.ymin) + "," +
                                 format_double(cell.xmax) + "," + format_double(cell.ymax);
   std::ostringstream in;
@@ -71,19 +88,8 @@ std::vector<DeckFile> periodic_lammps_deck(const Domain& domain, std::span<const
   }
   in << (torus ? "# In a torus gravity accelerates every disk alike (no wall holds them): delete this fix for a\n"
                  "# representative-volume run.\n"
-               : "")
-     << "fix gravity free gravity " << format_double(p.gravity) << " vector 0 -1 0\n"
-     << "fix move free nve/sphere disc\n"
-     << "fix plane all enforce2d\n"
-     << "# Timestep: the contact time pi sqrt(m_eff / kn) of the two lightest disks (m_eff = "
-     << format_double(p.mass_min / 2) << ") / 50.\n"
-     << "timestep " << format_double(p.dt_hooke) << "\n"
-     << "compute ke free ke\n"
-     << "thermo_style custom step atoms c_ke\n"
-     << "thermo " << every << "\n"
-     << "dump free free custom " << every << " free.lammpstrj id type radius mass x y vx vy fx fy\n"
-     << "dump_modify free sort id format float %.17g\n"
-     << "run " << options.steps << "\n";
+               : "");
+  write_motion_and_run(in, p, options.steps);
   return {{"deck.data", data.str()}, {"in.frontpack", in.str()}};
 }
 
@@ -123,7 +129,6 @@ std::vector<DeckFile> lammps_deck(const Domain& domain, std::span<const Disk> di
 
   const std::string free_types = p.types == 1 ? std::string("1") : "1.." + std::to_string(p.types);
   const std::string w = std::to_string(wall_type);
-  const std::uint64_t every = std::max<std::uint64_t>(1, options.steps / 10);
   std::ostringstream in;
   in << "# LAMMPS input written by frontpack " << version_string << " (run: lmp -in in.frontpack)\n"
      << "# " << disks.size() << " free disks of types " << free_types << ", " << walls.size()
@@ -155,19 +160,8 @@ std::vector<DeckFile> lammps_deck(const Domain& domain, std::span<const Disk> di
      << "pair_coeff * *\n"
      << "neighbor " << format_double(0.5 * p.rmin) << " bin\n"
      << "neigh_modify delay 0 every 1 check yes exclude type " << w << ' ' << w << "\n"
-     << "fix walls wall freeze\n"
-     << "fix gravity free gravity " << format_double(p.gravity) << " vector 0 -1 0\n"
-     << "fix move free nve/sphere disc\n"
-     << "fix plane all enforce2d\n"
-     << "# Timestep: the contact time pi sqrt(m_eff / kn) of the two lightest disks (m_eff = "
-     << format_double(p.mass_min / 2) << ") / 50.\n"
-     << "timestep " << format_double(p.dt_hooke) << "\n"
-     << "compute ke free ke\n"
-     << "thermo_style custom step atoms c_ke\n"
-     << "thermo " << every << "\n"
-     << "dump free free custom " << every << " free.lammpstrj id type radius mass x y vx vy fx fy\n"
-     << "dump_modify free sort id format float %.17g\n"
-     << "run " << options.steps << "\n";
+     << "fix walls wall freeze\n";
+  write_motion_and_run(in, p, options.steps);
   return {{"deck.data", data.str()}, {"in.frontpack", in.str()}};
 }
 
