@@ -48,14 +48,16 @@ double clearance_for(const Domain& domain, const FillOptions& o) {
   return o.clearance;
 }
 
-// A periodic cell: the closed form wraps around it (the boundary and open forms do not).
+// A periodic cell: the boundary method and the closed form wrap around it (the open form, which
+// grows from the bottom of a box with walls, does not).
 void check_periodic(const Domain& domain, const FillOptions& o) {
   if (domain.periodicity() == Periodicity::none) {
     return;
   }
-  if (o.method != Method::closed) {
-    throw OptionError(std::string("a periodic cell is filled by the closed form (method closed); the ") +
-                      to_string(o.method) + " method does not wrap around a cell");
+  if (o.method == Method::open) {
+    throw OptionError(
+        "a periodic cell is filled by the boundary method or the closed form; the open form does not wrap around a "
+        "cell");
   }
   // Each front segment and each disk's reach are a few rmax: at 10 rmax their images are far
   // enough apart that the nearest image is the one meant (generate/periodic_wrap.hpp).

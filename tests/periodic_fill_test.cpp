@@ -1,8 +1,8 @@
-// Filling a periodic cell (Domain::periodic(), the closed form wrapping around it): no two disks
-// overlap through any image, decided by the library's certifier and by an independent exact
-// oracle here (CGAL rationals over the exact periods); every centre lies in the half-open cell;
-// the front reaches across the sides; the run is deterministic; the options a periodic cell
-// cannot take are refused with a message.
+// Filling a periodic cell (Domain::periodic(); the boundary method and the closed form wrap around
+// it): no two disks overlap through any image, decided by the library's certifier and by an
+// independent exact oracle here (CGAL rationals over the exact periods); every centre lies in the
+// half-open cell; the front reaches across the sides; the run is deterministic; the options a
+// periodic cell cannot take are refused with a message.
 #include <gtest/gtest.h>
 
 #include <CGAL/Exact_rational.h>
@@ -20,9 +20,9 @@ namespace {
 
 using Q = CGAL::Exact_rational;
 
-FillOptions closed(const char* radii, std::uint64_t seed = 1) {
+FillOptions options(Method method, const char* radii, std::uint64_t seed = 1) {
   FillOptions o;
-  o.method = Method::closed;
+  o.method = method;
   o.radii = parse_radii(radii);
   o.seed = seed;
   return o;
@@ -77,10 +77,13 @@ std::size_t oracle_overlaps(const std::vector<Disk>& disks, const Box& cell, boo
   return found;
 }
 
-TEST(PeriodicFill, TorusHasNoOverlapThroughAnyImage) {
+// Each test runs with both methods that wrap around a cell.
+class PeriodicFill : public testing::TestWithParam<Method> {};
+
+TEST_P(PeriodicFill, TorusHasNoOverlapThroughAnyImage) {
   const Box cell{0, 0, 3, 3};
   const Domain domain = Domain::periodic(cell, Periodicity::xy);
-  const Packing packing = fill(domain, closed("discrete:0.02:0.5,0.028:0.5"));
+  const Packing packing = fill(domain, options(GetParam(), "discrete:0.02:0.5,0.028:0.5"));
   ASSERT_GT(packing.disks.size(), 3000U);
   EXPECT_EQ(packing.certificate.culled, 0U);
   EXPECT_EQ(packing.certificate.dropped, 0U);
@@ -99,13 +102,13 @@ TEST(PeriodicFill, TorusHasNoOverlapThroughAnyImage) {
     area += std::numbers::pi * d.radius * d.radius;
   }
   // The packing reaches across both pairs of sides (a front that stopped at them would not), and
-  // it is as dense as the closed form's interior (0.81-0.82 at these radii).
+  // it is as dense as each method's interior in a walled square (0.81-0.82 at these radii).
   EXPECT_GT(across_x, 40U);
   EXPECT_GT(across_y, 40U);
   EXPECT_GT(area / 9, 0.79);
 }
 
-TEST(PeriodicFill, OracleSeesAPlantedOverlapAcrossTheSide) {
+TEST(PeriodicOracle, SeesAPlantedOverlapAcrossTheSide) {
   // The oracle above can fail: two disks that overlap only through the x period.
   const Box cell{0, 0, 1, 1};
   const std::vector<Disk> disks{{{0.0625, 0.5}, 0.125}, {{0.875, 0.5}, 0.125}};
@@ -114,49 +117,58 @@ TEST(PeriodicFill, OracleSeesAPlantedOverlapAcrossTheSide) {
   EXPECT_EQ(oracle_overlaps(apart, cell, true), 0U);
 }
 
-TEST(PeriodicFill, ShearCellWrapsInXAndKeepsBetweenTheWalls) {
+TEST_P(PeriodicFill, ShearCellWrapsInXAndKeepsBetweenTheWalls) {
   const Box cell{-1, 2, 1.5, 3.5};
   const Domain domain = Domain::periodic(cell, Periodicity::x);
-  const Packing packing = fill(domain, closed("uniform:0.01,0.04", 7));
+  const Packing packing = fill(domain, options(GetParam(), "uniform:0.01,0.04", 7));
   ASSERT_GT(packing.disks.size(), 1000U);
+  if (GetParam() == Method::boundary) {
+    EXPECT_EQ(packing.certificate.culled, 0U);  // its walls are the cell's (the closed form culls there)
+  }
   EXPECT_EQ(packing.certificate.dropped, 0U);
   const CertifyReport report = certify(domain, packing.disks);
   EXPECT_TRUE(report.outside.empty());
   EXPECT_TRUE(report.overlapping.empty());
   EXPECT_EQ(oracle_overlaps(packing.disks, cell, false), 0U);
   std::size_t across_x = 0;
+  double area = 0;
   for (const Disk& d : packing.disks) {
     ASSERT_TRUE(d.centre.x >= cell.xmin && d.centre.x < cell.xmax);
     ASSERT_GE(d.centre.y - d.radius, cell.ymin);
     ASSERT_LE(d.centre.y + d.radius, cell.ymax);
     across_x += d.centre.x - d.radius < cell.xmin || d.centre.x + d.radius > cell.xmax ? 1U : 0U;
+    area += std::numbers::pi * d.radius * d.radius;
   }
   EXPECT_GT(across_x, 10U);
+  EXPECT_GT(area / (2.5 * 1.5), GetParam() == Method::boundary ? 0.80 : 0.76);  // the closed form culls at the walls
 }
 
-TEST(PeriodicFill, SameSeedSameBits) {
+TEST_P(PeriodicFill, SameSeedSameBits) {
   const Domain domain = Domain::periodic(Box{0, 0, 1, 1}, Periodicity::xy);
-  const Packing a = fill(domain, closed("uniform:0.01,0.05", 3));
-  const Packing b = fill(domain, closed("uniform:0.01,0.05", 3));
-  const Packing c = fill(domain, closed("uniform:0.01,0.05", 4));
+  const Packing a = fill(domain, options(GetParam(), "uniform:0.01,0.05", 3));
+  const Packing b = fill(domain, options(GetParam(), "uniform:0.01,0.05", 3));
+  const Packing c = fill(domain, options(GetParam(), "uniform:0.01,0.05", 4));
   EXPECT_EQ(a.disks, b.disks);
   EXPECT_NE(a.disks, c.disks);
 }
 
-TEST(PeriodicFill, RefusesWhatACellCannotTake) {
+INSTANTIATE_TEST_SUITE_P(Methods, PeriodicFill, testing::Values(Method::boundary, Method::closed),
+                         [](const testing::TestParamInfo<Method>& p) {
+                           return p.param == Method::boundary ? std::string("boundary") : std::string("closed");
+                         });
+
+TEST(PeriodicCell, RefusesWhatACellCannotTake) {
   const Domain domain = Domain::periodic(Box{0, 0, 1, 1}, Periodicity::xy);
-  FillOptions boundary = closed("uniform:0.01,0.05");
-  boundary.method = Method::boundary;
   try {
-    (void)fill(domain, boundary);
-    FAIL() << "the boundary method filled a periodic cell";
+    (void)fill(domain, options(Method::open, "uniform:0.01,0.05"));
+    FAIL() << "the open form filled a periodic cell";
   } catch (const OptionError& e) {
     EXPECT_EQ(std::string(e.what()),
-              "a periodic cell is filled by the closed form (method closed); the boundary method does not wrap "
+              "a periodic cell is filled by the boundary method or the closed form; the open form does not wrap "
               "around a cell");
   }
   try {
-    (void)fill(domain, closed("uniform:0.05,0.2"));
+    (void)fill(domain, options(Method::boundary, "uniform:0.05,0.2"));
     FAIL() << "a cell 5 rmax wide was filled";
   } catch (const OptionError& e) {
     EXPECT_EQ(std::string(e.what()),

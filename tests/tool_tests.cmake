@@ -430,15 +430,21 @@ frontpack_tool_check(render_periodic_images 0 "wrote: .*p\\.png \\(png, 500 x 50
 frontpack_tool_test(render_images_needs_periodic 1 "--images requires --periodic"
   render ${S}/unit_square.wkt ${P}/hex_torus.csv --images -o images.png)
 
-# fill --periodic: the closed form by default, certified across the images (the certifier is the
-# periodic one: a disk crossing a side would be culled by a walled check); the other methods refused.
-frontpack_tool_test(fill_periodic 0 "closed form.*certified: ([0-9]+) generated, 0 culled .*, 0 dropped"
+# fill --periodic: the boundary method by default (as elsewhere) or the closed form, certified across
+# the images (the certifier is the periodic one: a disk crossing a side would be culled by a walled
+# check; the boundary method culls nothing, the closed form its disks beyond a shear cell's walls);
+# the open form refused.
+frontpack_tool_test(fill_periodic 0 "boundary form.*certified: ([0-9]+) generated, 0 culled .*, 0 dropped"
   fill --periodic 2,2 --radius discrete:0.02:0.5,0.028:0.5 --seed 5)
-frontpack_tool_test(fill_periodic_shear 0 "closed form.*certified: [0-9]+ generated, [1-9][0-9]* culled .*, 0 dropped"
+frontpack_tool_test(fill_periodic_closed 0 "closed form.*certified: ([0-9]+) generated, 0 culled .*, 0 dropped"
+  fill --periodic 2,2 --radius discrete:0.02:0.5,0.028:0.5 --seed 5 --method closed)
+frontpack_tool_test(fill_periodic_shear 0 "boundary form.*certified: [0-9]+ generated, 0 culled .*, 0 dropped"
   fill --periodic -1,0,1,0.5 --periodic-axes x --radius uniform:0.01,0.04)
-frontpack_tool_test(fill_periodic_boundary 5
-  "a periodic cell is filled by the closed form \\(method closed\\); the boundary method does not wrap around a cell"
-  fill --periodic 2,2 --method boundary)
+frontpack_tool_test(fill_periodic_shear_closed 0 "closed form.*certified: [0-9]+ generated, [1-9][0-9]* culled .*, 0 dropped"
+  fill --periodic -1,0,1,0.5 --periodic-axes x --radius uniform:0.01,0.04 --method closed)
+frontpack_tool_test(fill_periodic_open 5
+  "a periodic cell is filled by the boundary method or the closed form; the open form does not wrap around a cell"
+  fill --periodic 2,2 --method open)
 frontpack_tool_test(fill_periodic_narrow 5 "a periodic cell must be at least 10 rmax = 0.5 across each periodic direction"
   fill --periodic 0.4,2 --radius uniform:0.01,0.05)
 frontpack_tool_test(fill_periodic_and_domain 1 "excludes"

@@ -176,7 +176,7 @@ class Front {
     const std::size_t first_out = out_.size();
     periodic_.drop(nodes_, kFirstDisk);
     move_out(nodes_, kFirstDisk, frame_.origin, frame_.unit.inv_k, out_);
-    periodic_.keep_in_cell(std::span<Disk>(out_).subspan(first_out), region_);
+    keep_in_cell(wrap_, std::span<Disk>(out_).subspan(first_out), region_);
     result.fixed_bytes = fixed_bytes_;
     return result;
   }

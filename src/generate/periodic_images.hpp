@@ -101,20 +101,6 @@ class PeriodicImages {
     release(entries_);
   }
 
-  /// The centres written out (cell corner + local position, rounded) kept in the half-open cell
-  /// [xmin, xmax) on a periodic axis: one that rounded up onto the far bound lay within a rounding
-  /// of the near one, so it goes there (a move far inside the clearance's margin).
-  void keep_in_cell(std::span<Disk> disks, const Box& cell) const noexcept {
-    for (Disk& d : disks) {
-      if (wrap.x && d.centre.x >= cell.xmax) {
-        d.centre.x = cell.xmin;
-      }
-      if (wrap.y && d.centre.y >= cell.ymax) {
-        d.centre.y = cell.ymin;
-      }
-    }
-  }
-
  private:
   std::vector<std::int32_t> image_of_;  // per node: the disk an image is of
   std::size_t count_ = 0;

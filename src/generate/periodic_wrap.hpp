@@ -12,6 +12,9 @@
 
 #include <array>
 #include <cstddef>
+#include <span>
+
+#include "frontpack/geometry.hpp"
 
 namespace frontpack::detail {
 
@@ -73,5 +76,19 @@ struct PeriodicWrap {
     return v >= 0 && v < l ? v : 0;
   }
 };
+
+/// The centres written out (cell corner + local position, rounded) kept in the half-open cell
+/// [xmin, xmax) on a periodic axis: one that rounded up onto the far bound lay within a rounding
+/// of the near one, so it goes there (a move far inside the clearance's margin).
+inline void keep_in_cell(const PeriodicWrap& wrap, std::span<Disk> disks, const Box& cell) noexcept {
+  for (Disk& d : disks) {
+    if (wrap.x && d.centre.x >= cell.xmax) {
+      d.centre.x = cell.xmin;
+    }
+    if (wrap.y && d.centre.y >= cell.ymax) {
+      d.centre.y = cell.ymin;
+    }
+  }
+}
 
 }  // namespace frontpack::detail

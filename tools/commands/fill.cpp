@@ -65,8 +65,7 @@ std::size_t parse_bytes(const char* option, const std::string& text) {
 struct FillArgs {
   DomainSource src;
   std::string method = frontpack::to_string(frontpack::FillOptions{}.method);
-  CLI::Option* method_option = nullptr;  // --method given (a periodic cell defaults to closed)
-  std::string radius;                    // empty: kDefaultRadius
+  std::string radius;  // empty: kDefaultRadius
   std::string seed = "0";
   std::string max_disks = std::to_string(frontpack::FillOptions{}.max_disks);
   std::string memory_limit = "0";
@@ -284,9 +283,7 @@ int run_fill(const FillArgs& a) {
   const auto t_start = Clock::now();
   const std::string spec = a.radius.empty() ? std::string(kDefaultRadius) : a.radius;
   frontpack::FillOptions options;
-  // A periodic cell is filled by the closed form, the one method that wraps around it.
-  const bool closed_by_default = a.src.from_periodic() && a.method_option->count() == 0;
-  options.method = closed_by_default ? frontpack::Method::closed : parse_method(a.method);
+  options.method = parse_method(a.method);
   options.radii = frontpack::parse_radii(spec);
   options.seed = parse_count("--seed", a.seed, std::numeric_limits<std::uint64_t>::max());
   options.max_disks = parse_count("--max-disks", a.max_disks, std::numeric_limits<std::uint64_t>::max());
@@ -455,10 +452,8 @@ Command add_fill(CLI::App& app) {
   add_periodic_options(*cmd, args->src);
   cmd->get_option("DOMAIN")->excludes(args->src.periodic_option);
   args->src.periodic_option->excludes(cmd->get_option("DOMAIN"));
-  args->method_option =
-      cmd->add_option("--method", args->method,
-                      "closed (Sec. 2), open (Sec. 3) or boundary (the domain's edges as walls); closed for --periodic")
-          ->capture_default_str();
+  cmd->add_option("--method", args->method, "closed (Sec. 2), open (Sec. 3) or boundary (the domain's edges as walls)")
+      ->capture_default_str();
   cmd->add_option("--radius", args->radius, std::string(kRadiusHelp) + " (default " + kDefaultRadius + ")");
   cmd->add_option("--seed", args->seed, "64-bit seed, 0 to 18446744073709551615 (same seed, same packing)")
       ->capture_default_str();

@@ -89,6 +89,7 @@ class BoundaryFront {
         control_(req.max_disks, req.tick),
         out_before_(out.size()),
         frame_(*req.radii, req.clearance, outer_box(polygon)),
+        cell_(outer_box(polygon)),
         elements_(frame_),
         obstacles_(frame_, stats) {
     box_ = Box{-frame_.clearance, -frame_.clearance, frame_.width + frame_.clearance, frame_.height + frame_.clearance};
@@ -97,7 +98,11 @@ class BoundaryFront {
     const double estimate = estimate_disks(outer_box(polygon), *req.radii);
     // (Every disk lies in the polygon: at most its box's area, bound_disks(), 1.18 estimates.)
     elements_.reserve(count_of(estimate * 1.3 + 64, 1e9));
-    Seeding seeding = seed_at_corners(polygon, frame_);
+    const bool periodic = req.periodicity != Periodicity::none;
+    if (periodic) {
+      elements_.set_periodic(PeriodicWrap{true, req.periodicity == Periodicity::xy, frame_.width, frame_.height});
+    }
+    Seeding seeding = periodic ? seed_periodic_cell(frame_, req.periodicity) : seed_at_corners(polygon, frame_);
     ring_first_ = std::move(seeding.ring_first);
     rough_ = std::move(seeding.rough);
     any_rough_ = seeding.any_rough;
@@ -108,6 +113,11 @@ class BoundaryFront {
     }
     const SetupBudget budget{req_.memory_limit, estimate};
     fixed_bytes_ = obstacles_.set_up(elements_.walls(), frame_, budget);
+    if (req.periodicity == Periodicity::xy) {
+      obstacles_.set_periodic(-INFINITY, INFINITY);
+    } else if (periodic) {
+      obstacles_.set_periodic(0, frame_.height);
+    }
     if (req_.memory_limit != 0) {
       budget.check(fixed_bytes_, "the grid and the lists of the walls near its cells");
       control_.limit_memory(req_.memory_limit - fixed_bytes_);
@@ -198,15 +208,20 @@ class BoundaryFront {
     }
     elements_.release_links();
     obstacles_.release();
+    const std::size_t first_out = out_.size();
     elements_.move_out(frame_.origin, frame_.unit.inv_k, out_);
+    if (wrap().any()) {
+      keep_in_cell(wrap(), std::span<Disk>(out_).subspan(first_out), cell_);
+    }
     result.fixed_bytes = fixed_bytes_;
     return result;
   }
 
  private:
   [[nodiscard]] std::size_t placed() const noexcept {
-    return elements_.size() - static_cast<std::size_t>(elements_.corner_count()) + out_before_;
+    return elements_.size() - static_cast<std::size_t>(elements_.corner_count()) - elements_.images() + out_before_;
   }
+  [[nodiscard]] const PeriodicWrap& wrap() const noexcept { return elements_.wrap(); }
   // Whether front gap g has been overtaken: a later gap paired its first disk with another second
   // element, or its second disk with another first one. Mostly a disk placed since then touching
   // one of them on g's free side has covered the gap (in the paper's list, g's segment was cut),
@@ -250,10 +265,29 @@ class BoundaryFront {
   // ------------------------------------------------------------------------------------------
   // The elements (elements.hpp) and what is in a candidate's way (obstacles.hpp).
 
-  // A new disk at (x, y), a candidate that passed the box test.
+  // A new disk at (x, y), a candidate that passed the box test. In a periodic cell, (x, y) is
+  // brought into the cell, and the disk gets its images within kImageReach rmax of the cell: a
+  // probe in the cell scans at most r + rmax and a few clearances around it (deepest()), and the
+  // cavity pass's nearest disks at most 3 rmax.
+  static constexpr double kImageReach = 3;
   std::int32_t add_node(double x, double y, double r) {
+    if (wrap().any()) {
+      x = wrap().wrap_x(x);
+      y = wrap().wrap_y(y);
+    }
     const auto id = static_cast<std::int32_t>(elements_.size());
-    return elements_.add_disk(x, y, r, obstacles_.enter(id, x, y));
+    const std::int32_t n = elements_.add_disk(x, y, r, obstacles_.enter(id, x, y));
+    if (wrap().any()) {
+      std::array<std::array<double, 2>, 3> shifts{};
+      const std::size_t k = wrap().image_shifts(x, y, kImageReach * frame_.rmax + 2 * frame_.clearance, shifts);
+      for (std::size_t i = 0; i < k; ++i) {
+        const double ix = x + shifts[i][0];
+        const double iy = y + shifts[i][1];
+        const auto image = static_cast<std::int32_t>(elements_.size());
+        elements_.add_image(n, ix, iy, obstacles_.enter(image, ix, iy));
+      }
+    }
+    return n;
   }
   [[nodiscard]] Probe probe(double x, double y, double r) const noexcept { return obstacles_.probe(x, y, r); }
   bool tangent(std::int32_t a, std::int32_t b, double r, double& px, double& py) const noexcept {
@@ -301,8 +335,16 @@ class BoundaryFront {
       return false;
     }
     ++seeds_;
+    if (seeds_ == 1 && wrap().any() && !wrap().y) {
+      return seed_walls(r);
+    }
     const double r2 = draw();
-    const std::optional<Point> at = seed_pair_at(obstacles_, elements_, frame_, rng_, r, r2);
+    // A torus's first pair lies at the cell's centre (nothing else is there yet), so that the front
+    // meets itself along the sides x = 0 and y = 0, as the closed form's does (Sec. 2.1).
+    const std::optional<Point> at =
+        seeds_ == 1 && wrap().y
+            ? std::optional<Point>{Point{(frame_.width - r - r2 - frame_.clearance) / 2, frame_.height / 2}}
+            : seed_pair_at(obstacles_, elements_, frame_, rng_, r, r2);
     if (!at) {
       return false;
     }
@@ -311,6 +353,32 @@ class BoundaryFront {
     area_ += r2 * r2;
     push_gap(Gap{a, b});
     push_gap(Gap{b, a});
+    return true;
+  }
+
+  // A shear cell (periodic in x, walls at the bottom and top): a disk of radius r on the bottom
+  // wall and one of a second drawn radius on the top wall, each at a random x, with a gap on each
+  // side along its wall (before and after it): the first layer grows along each wall both ways,
+  // around the cell, and the front moves inwards from both, as from a domain's walls. (The top
+  // disk is left out if it would not fit: the cell is then thinner than the two disks.)
+  bool seed_walls(double r) {
+    const std::array<std::int32_t, 2> wall{wall_id(0), wall_id(1)};
+    const double r2 = draw();
+    const double bottom = r + frame_.clearance;
+    const double top = frame_.height - r2 - frame_.clearance;
+    if (!(bottom + r <= frame_.height)) {
+      return false;
+    }
+    const std::int32_t a = add_node(frame_.width * rng_.uniform(), bottom, r);
+    push_gap(Gap{wall[0], a});
+    push_gap(Gap{a, wall[0]});
+    const double x2 = frame_.width * rng_.uniform();
+    if (top > bottom && obstacles_.deepest<true>(elements_, probe(x2, top, r2)) == kNone) {
+      const std::int32_t b = add_node(x2, top, r2);
+      area_ += r2 * r2;
+      push_gap(Gap{wall[1], b});
+      push_gap(Gap{b, wall[1]});
+    }
     return true;
   }
 
@@ -366,7 +434,7 @@ class BoundaryFront {
   // square such voids were tried 178k times for 3k disks (1 in 67k beyond 8 rmin).
   [[nodiscard]] bool worth_a_void(std::int32_t x, std::int32_t y) const noexcept {
     const BoundaryNode& a = elements_.node(x);
-    const BoundaryNode& b = elements_.node(y);
+    const BoundaryNode b = elements_.near(y, a);
     const double dx = a.x - b.x;
     const double dy = a.y - b.y;
     const double reach = a.r + b.r + 4 * frame_.rmin;
@@ -401,7 +469,14 @@ class BoundaryFront {
     int moves = walled ? (in_void ? kVoidMoves : kWallMoves) : kMoves;
     for (int move = 0; move <= moves; ++move) {
       slide(x, y, r, px, py);
-      if (!(px - r >= box_.xmin && px + r <= box_.xmax && py - r >= box_.ymin && py + r <= box_.ymax)) {
+      if (wrap().any()) {
+        // A periodic cell: the candidate brought into it (where its images' neighbours are).
+        px = wrap().wrap_x(px);
+        py = wrap().wrap_y(py);
+      }
+      const bool in_x = wrap().x || (px - r >= box_.xmin && px + r <= box_.xmax);
+      const bool in_y = wrap().y || (py - r >= box_.ymin && py + r <= box_.ymax);
+      if (!(in_x && in_y)) {
         return result;  // outside the polygon's box, so outside the polygon
       }
       const Probe p = probe(px, py, r);
@@ -409,9 +484,9 @@ class BoundaryFront {
       // element it finds bounds the void the gap leaves, the deepest one if the grid is scanned).
       // In the interior, the disks most often in the way are tried before the scan (in_the_way()).
       const Gap first{x, y};
-      const std::int32_t d = move == moves && move > 0
-                                 ? obstacles_.deepest<true>(elements_, p)
-                                 : obstacles_.deepest(elements_, p, move == 0 && !walled ? &first : nullptr);
+      const std::int32_t d = elements_.real(
+          move == moves && move > 0 ? obstacles_.deepest<true>(elements_, p)
+                                    : obstacles_.deepest(elements_, p, move == 0 && !walled ? &first : nullptr));
       if (d == kNone) {
         if (!elements_.supported_by(x, px, py) || !elements_.supported_by(y, px, py)) {
           return result;
@@ -512,8 +587,10 @@ class BoundaryFront {
     if (!ok_a && !ok_b) {
       return false;
     }
-    const double da = ok_a ? (ax - px) * (ax - px) + (ay - py) * (ay - py) : INFINITY;
-    const double db = ok_b ? (bx - px) * (bx - px) + (by - py) * (by - py) : INFINITY;
+    // (In a periodic cell the shortest displacement: the positions are each near their parents.)
+    const PeriodicWrap& w = wrap();
+    const double da = ok_a ? w.dx(ax - px) * w.dx(ax - px) + w.dy(ay - py) * w.dy(ay - py) : INFINITY;
+    const double db = ok_b ? w.dx(bx - px) * w.dx(bx - px) + w.dy(by - py) * w.dy(by - py) : INFINITY;
     if (da <= db) {
       replaced = y;
       y = d;
@@ -537,6 +614,7 @@ class BoundaryFront {
   RunFrame frame_;
   RadiusClasses<kClasses> classes_;
   Box box_;                      // the polygon's box (local coordinates) grown by the clearance
+  Box cell_;                     // the polygon's box (a periodic cell's bounds, for keep_in_cell())
   std::size_t fixed_bytes_ = 0;  // the grid's and the wall lists', for the memory limit
   double area_ = 0;
   double polygon_area_ = 0;  // shoelace, for the seeding rule

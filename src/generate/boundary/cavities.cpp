@@ -37,10 +37,14 @@ std::vector<Gap> cavity_gaps(Obstacles& obstacles, const Elements& elements, con
       if (ab[1] == kNoElement) {
         continue;
       }
+      // (In a periodic cell, either may be an image: its position is the one near (x, y), and
+      // the gap names its disk.)
       const BoundaryNode& a = elements.node(ab[0]);
       const BoundaryNode& b = elements.node(ab[1]);
       const bool left = (b.x - a.x) * (y - a.y) - (b.y - a.y) * (x - a.x) > 0;
-      found.push_back(left ? Gap{ab[0], ab[1]} : Gap{ab[1], ab[0]});
+      const std::int32_t ra = elements.real(ab[0]);
+      const std::int32_t rb = elements.real(ab[1]);
+      found.push_back(left ? Gap{ra, rb} : Gap{rb, ra});
     }
   }
   return found;

@@ -11,6 +11,7 @@
 
 #include "common/huge_pages.hpp"
 #include "generate/boundary/walls.hpp"
+#include "generate/periodic_wrap.hpp"
 #include "generate/run_control.hpp"
 #include "generate/scale.hpp"
 #include "generate/settings.hpp"
@@ -50,6 +51,9 @@ class Elements {
     corners_ = std::move(corners);
     corner_count_ = static_cast<std::int32_t>(corners_.size());
     for (const Point& p : corner_at) {
+      if (wrap_.any()) {
+        real_.push_back(static_cast<std::int32_t>(nodes_.size()));
+      }
       nodes_.push_back(BoundaryNode{p.x, p.y, 0, kNoElement, kNoElement});
       before_.push_back(kNoElement);
     }
@@ -79,8 +83,53 @@ class Elements {
     const auto id = static_cast<std::int32_t>(nodes_.size());
     nodes_.push_back(BoundaryNode{x, y, r, cell_next, kNoElement});
     before_.push_back(kNoElement);
+    if (wrap_.any()) {
+      real_.push_back(id);
+    }
     return id;
   }
+
+  // ------------------------------------------------------------------------------------------
+  // A periodic cell (periodic_wrap.hpp; the cell is [0, lx) x [0, ly), local). A disk's centre is
+  // kept in the cell; a disk near a periodic side has images, nodes in the grid's cells only, never
+  // in a gap: what a scan finds may be an image, and real() names its disk. Every position is
+  // computed from nodes as seen from one of them (near(): the minimum image), which a cell at least
+  // 10 rmax wide makes the one meant, since the elements a disk touches lie within 2 rmax of it.
+
+  /// Makes the run periodic (before any node).
+  void set_periodic(const PeriodicWrap& wrap) noexcept { wrap_ = wrap; }
+  [[nodiscard]] const PeriodicWrap& wrap() const noexcept { return wrap_; }
+
+  /// Node e as seen from (x, y): itself, or in a periodic cell its minimum image.
+  [[nodiscard]] BoundaryNode near(std::int32_t e, double x, double y) const noexcept {
+    BoundaryNode o = node(e);
+    if (wrap_.any()) {
+      o.x = x + wrap_.dx(o.x - x);
+      o.y = y + wrap_.dy(o.y - y);
+    }
+    return o;
+  }
+  /// Node e as seen from node `from`.
+  [[nodiscard]] BoundaryNode near(std::int32_t e, const BoundaryNode& from) const noexcept {
+    return near(e, from.x, from.y);
+  }
+
+  /// The disk that node e is an image of (e itself for any other element).
+  [[nodiscard]] std::int32_t real(std::int32_t e) const noexcept {
+    return e >= 0 && wrap_.any() ? real_[static_cast<std::size_t>(e)] : e;
+  }
+
+  /// An image of disk `of` at (x, y), cell_next the next node in its grid cell; its id.
+  std::int32_t add_image(std::int32_t of, double x, double y, std::int32_t cell_next) {
+    const auto id = static_cast<std::int32_t>(nodes_.size());
+    nodes_.push_back(BoundaryNode{x, y, node(of).r, cell_next, kNoElement});
+    before_.push_back(kNoElement);
+    real_.push_back(of);
+    ++images_;
+    return id;
+  }
+  /// How many images there are.
+  [[nodiscard]] std::size_t images() const noexcept { return images_; }
 
   /// The front's links per disk: the first element of the last front gap with disk d second
   /// (before()), and the second element of the last with d first (after()).
@@ -102,7 +151,7 @@ class Elements {
     const double g = r + clearance_;
     if (!is_wall(a) && !is_wall(b)) {
       const BoundaryNode& an = node(a);
-      const BoundaryNode& bn = node(b);
+      const BoundaryNode bn = near(b, an);
       return tangent_to_two(an.x, an.y, an.r + g, bn.x, bn.y, bn.r + g, /*left=*/true, scale_, px, py);
     }
     if (is_wall(a) && is_wall(b)) {
@@ -151,8 +200,19 @@ class Elements {
   /// Frees the front's links (the run is over).
   void release_links() { release(before_); }
 
-  /// Appends the disks, scaled back to the domain's coordinates, to `out`, and frees the nodes.
+  /// Appends the disks, scaled back to the domain's coordinates, to `out`, and frees the nodes
+  /// (the images are dropped first).
   void move_out(Point origin, double inv_k, std::vector<Disk>& out) {
+    if (images_ != 0) {
+      std::size_t kept = 0;
+      for (std::size_t i = 0; i < nodes_.size(); ++i) {
+        if (i < corners_.size() || real_[i] == static_cast<std::int32_t>(i)) {
+          nodes_[kept++] = nodes_[i];
+        }
+      }
+      nodes_.resize(kept);
+      release(real_);
+    }
     detail::move_out(nodes_, corners_.size(), origin, inv_k, out);
   }
 
@@ -164,6 +224,9 @@ class Elements {
   std::int32_t corner_count_ = 0;  // corners_.size()
   HugeVector<BoundaryNode> nodes_;
   HugeVector<std::int32_t> before_;  // per disk: the first element of the last front gap with it second
+  PeriodicWrap wrap_;                // local; none outside a periodic cell
+  std::vector<std::int32_t> real_;   // periodic: per node, the disk it is (an image's, its disk's id)
+  std::size_t images_ = 0;
 };
 
 }  // namespace frontpack::detail

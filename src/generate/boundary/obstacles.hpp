@@ -60,8 +60,17 @@ class Obstacles {
   /// How far the candidate comes into disk o (acceptance.hpp): > 0 if it overlaps.
   double depth(const Probe& p, const BoundaryNode& o) { return overlap_.depth(p, o); }
 
-  /// Whether (x, y) lies inside the polygon (wall_index.hpp).
-  [[nodiscard]] bool inside(double x, double y) const noexcept { return index_.inside(x, y); }
+  /// Whether (x, y) lies inside the polygon (wall_index.hpp); in a periodic cell, between its
+  /// walls (set_periodic()).
+  [[nodiscard]] bool inside(double x, double y) const noexcept {
+    return periodic_ ? y > band_[0] && y < band_[1] : index_.inside(x, y);
+  }
+  /// A periodic cell: inside() is ylo < y < yhi (its walls, or none: infinite bounds), since its
+  /// walls are no ring.
+  void set_periodic(double ylo, double yhi) noexcept {
+    periodic_ = true;
+    band_ = {ylo, yhi};
+  }
   /// The wall nearest to (x, y) (wall_index.hpp).
   std::int32_t nearest(double x, double y, double& d2, std::int32_t best) const noexcept {
     return index_.nearest(x, y, d2, best);
@@ -117,6 +126,7 @@ class Obstacles {
   // ends there). With `quick`, the gap whose candidate this is, and no wall in the way, the disks
   // in_the_way() tries are asked first, and the first of them in the way is returned: for a gap
   // whose try fails on any disk (no move, which only a wall in the way would start).
+  // In a periodic cell the element found may be an image (Elements::real() names its disk).
   template <bool Any = false>
   std::int32_t deepest(const Elements& el, const Probe& p, const Gap* quick = nullptr);
 
@@ -147,11 +157,11 @@ class Obstacles {
   // the pocket this one leaves (a bound all the same), so packings differ from the scan's.
   std::int32_t in_the_way(const Elements& el, std::int32_t x, std::int32_t y, const Probe& p, std::size_t home) {
     const std::int32_t before = el.is_disk(x) ? el.before(x) : kNoElement;
-    if (el.is_disk(before) && depth(p, el.node(before)) > 0) {
+    if (el.is_disk(before) && depth(p, el.near(before, p.x, p.y)) > 0) {
       return before;
     }
     const std::int32_t after = el.is_disk(y) ? el.after(y) : kNoElement;
-    if (el.is_disk(after) && depth(p, el.node(after)) > 0) {
+    if (el.is_disk(after) && depth(p, el.near(after, p.x, p.y)) > 0) {
       return after;
     }
     for (std::int32_t e = head_cell_[home]; e != kNoElement; e = el.node(e).cell_next) {
@@ -168,6 +178,8 @@ class Obstacles {
   bool probes_inside_ = false;  // probe_col(), probe_row(): no clamping needed
   HugeVector<std::int32_t> head_cell_;
   WallIndex index_;
+  bool periodic_ = false;
+  std::array<double, 2> band_{0, 0};  // periodic: inside() between these
 };
 
 template <bool Any>

@@ -230,7 +230,7 @@ inline double pocket_at_two_walls(const Wall& p, const Wall& q, const Node& ni) 
     std::swap(i, j);
   }
   const BoundaryNode& ni = el.node(i);
-  const BoundaryNode& nj = el.node(j);
+  const BoundaryNode nj = el.near(j, ni);
   if (el.ends(wl, i)) {
     return el.ends(wl, j) ? -1 : pocket_at_wall_end(wl, ni, nj);
   }
@@ -276,8 +276,8 @@ inline double pocket_at_two_walls(const Wall& p, const Wall& q, const Node& ni) 
     return -1;
   }
   const BoundaryNode& na = el.node(a);
-  const BoundaryNode& nb = el.node(b);
-  const BoundaryNode& nd = el.node(d);
+  const BoundaryNode nb = el.near(b, na);
+  const BoundaryNode nd = el.near(d, na);
   return pocket_of_nodes<double>(na.x, na.y, na.r, nb.x, nb.y, nb.r, nd.x, nd.y, nd.r, el.scale());
 }
 
@@ -289,9 +289,9 @@ inline double pocket_at_two_walls(const Wall& p, const Wall& q, const Node& ni) 
 [[nodiscard]] inline std::array<double, 2> pocket_pair(const Elements& el, std::int32_t x, std::int32_t n,
                                                        std::int32_t y, std::int32_t d) noexcept {
   const BoundaryNode& a = el.node(x);
-  const BoundaryNode& m = el.node(n);
-  const BoundaryNode& b = el.node(y);
-  const BoundaryNode& o = el.node(d);
+  const BoundaryNode m = el.near(n, a);
+  const BoundaryNode b = el.near(y, a);
+  const BoundaryNode o = el.near(d, a);
   const V2 rho = pocket_of_nodes<V2>(V2{a.x, m.x}, V2{a.y, m.y}, V2{a.r, m.r}, V2{m.x, b.x}, V2{m.y, b.y}, V2{m.r, b.r},
                                      lanes<V2>(o.x), lanes<V2>(o.y), lanes<V2>(o.r), el.scale());
   std::array<double, 2> caps{rho[0], rho[1]};

@@ -110,6 +110,19 @@ Seeding seed_at_corners(const Polygon& polygon, const RunFrame& frame) {
   return s;
 }
 
+Seeding seed_periodic_cell(const RunFrame& frame, Periodicity periodicity) {
+  Seeding s;
+  if (periodicity == Periodicity::x) {
+    const double reach = 4 * frame.rmax;
+    s.walls.push_back(make_wall(-reach, 0, frame.width + reach, 0));                        // bottom, inside above
+    s.walls.push_back(make_wall(frame.width + reach, frame.height, -reach, frame.height));  // top, inside below
+    s.ring_first = {0, 1};
+    s.rough = {0, 0};
+  }
+  s.area = frame.width * frame.height;
+  return s;
+}
+
 std::optional<Point> seed_pair_at(Obstacles& obstacles, const Elements& elements, const RunFrame& frame, Rng& rng,
                                   double r, double r2) {
   for (int t = 0; t < kSeedTries; ++t) {

@@ -39,6 +39,12 @@ struct Seeding {
 /// `corners`, which is its node id.
 [[nodiscard]] Seeding seed_at_corners(const Polygon& polygon, const RunFrame& frame);
 
+/// A periodic cell ([0, width) x [0, height), local) as the front sees it: no wall if it is
+/// periodic in x and y; else its bottom and top as two walls (each a ring of its own), reaching
+/// 4 rmax beyond the cell on either side so that a disk near a periodic side, or its image, has
+/// its foot on them. No corner and no first gap: seeds start the front (boundary_front.cpp).
+[[nodiscard]] Seeding seed_periodic_cell(const RunFrame& frame, Periodicity periodicity);
+
 /// A place inside the polygon for a seed pair: a disk of radius r at the point returned and one of
 /// radius r2 beside it, to the right, apart by the clearance, both clear of every element. Tried
 /// at up to kSeedTries points drawn in the polygon's box; nothing if none fits.
