@@ -25,6 +25,7 @@
 #include "generate/boundary/elements.hpp"
 #include "generate/boundary/obstacles.hpp"
 #include "generate/boundary/pocket.hpp"
+#include "generate/boundary/rules.hpp"
 #include "generate/boundary/seeding.hpp"
 #include "generate/boundary/wall_index.hpp"
 #include "generate/boundary/walls.hpp"
@@ -35,47 +36,8 @@ namespace frontpack::detail {
 
 namespace {
 
+using namespace boundary_rules;  // NOLINT(google-build-using-namespace): the rules are this file's
 constexpr std::int32_t kNone = kNoElement;
-// Void buckets: log-spaced radius classes between rmin and rmax. Finer classes match each radius
-// to a void barely larger than it (at rmax / rmin = 10, 24 classes gave the comb an interior of
-// 0.836, 128 give 0.842); the cost per disk grows by about a tenth.
-constexpr int kClasses = 128;
-// Alternatives tried per gap (cases (b)-(d): the candidate moved to touch the element in its way
-// and one of its parents). None for a front gap or a void in the interior: there a move places
-// few of the disks it tries, and the radii it would have placed find the voids instead (moves
-// cost the interior 0.01 of packing fraction on every shape: 0.842-0.852 with one move per front
-// gap, 0.849-0.864 without). One, though, where the element in the way is a wall or
-// a reflex vertex (kWallCut): the moved disk then touches the boundary, and a smooth curve's band
-// stays as dense as its interior (without it a 100,000-vertex circle's band packed 0.66 against
-// 0.84 inside). Gaps on a wall or a reflex vertex get three, and so do voids there: with one per
-// void the band of a rough boundary (big_polygon) packed 0.023 below its interior, with three
-// 0.015.
-//
-// An interior front gap blocked by a disk whose pocket no radius of the distribution fits (the
-// pocket between the gap's two elements and the disk, below rmin) would be dropped, and the front
-// would leave a hole there: no other gap faces it. It gets kClose moves instead, which close the
-// front over the blocker as the paper's cases (b)-(d) do (Sec. 2.2). At wide size ranges such
-// pockets are rare and the rule changes little (rmax / rmin = 10: interior 0.865 either way); at
-// narrow ones almost every blocked gap is one, and without it the front left holes where a large
-// disk fits (bidisperse 1:1.4: interior 0.746 without, 0.809 with two moves, 0.795 with one, 0.809
-// with three; docs/density.md). Closing at larger pockets too (below the distribution's 30% or 60%
-// quantile) took 0.01-0.015 from the interior at rmax / rmin = 3 and 10; closing voids as well
-// changed nothing but the cost (1.3-1.8 times the time per disk at ratios 1.4-3). Not with a
-// constant radius: there the front grows a crystal from every wall, a blocked gap is one of its
-// interstices, and closing over it breaks the crystal (a 10 x 10 square of radius 0.025: interior
-// 0.892 without, 0.788 with).
-constexpr int kMoves = 0;
-constexpr int kClose = 2;
-constexpr int kWallCut = 1;
-constexpr int kWallMoves = 3;
-constexpr int kVoidMoves = 3;
-// The end of a run: the last voids, where the fronts met, are filled with the radii that fit
-// them, skipping those that fit none, at most one radius in kSkipPer placed. Without it the seam
-// where the fronts met last stayed sparse (the centre of a 10 x 10 square, uniform radii
-// 0.0019-0.019, 207k disks: 0.706 of a disk of radius 0.1 covered, 0.807 from 0.1 to 0.2, against
-// 0.868 around); skipping 1 in 1000 gave 0.829 and 0.852, 1 in 100 0.870 and 0.879, with the KS
-// distance by area from the request 0.0017 -> 0.0018 (measured without the cavity pass).
-constexpr std::size_t kSkipPer = 100;
 
 // Voids are part of the method: fill() refuses FillOptions::fill_voids = false for it (without
 // them every gap a drawn radius did not fit was dropped, and the packing kept large empty areas).
@@ -94,6 +56,7 @@ class BoundaryFront {
         obstacles_(frame_, stats) {
     box_ = Box{-frame_.clearance, -frame_.clearance, frame_.width + frame_.clearance, frame_.height + frame_.clearance};
     classes_ = RadiusClasses<kClasses>(frame_.rmin, frame_.rmax);
+    close_below_ = close_below(frame_.rmin, frame_.rmax);
 
     const double estimate = estimate_disks(outer_box(polygon), *req.radii);
     // (Every disk lies in the polygon: at most its box's area, bound_disks(), 1.18 estimates.)
@@ -265,10 +228,9 @@ class BoundaryFront {
   // ------------------------------------------------------------------------------------------
   // The elements (elements.hpp) and what is in a candidate's way (obstacles.hpp).
 
-  // A new disk at (x, y), a candidate that passed the box test. In a periodic cell, (x, y) is
-  // brought into the cell, and the disk gets its images within kImageReach rmax of the cell: a
-  // probe in the cell scans at most r + rmax and a few clearances around it (deepest()), and the
-  // cavity pass's nearest disks at most 3 rmax.
+  // A new disk at (x, y), a candidate that passed the box test. In a periodic cell, brought into
+  // the cell, with images within kImageReach rmax of it: a probe in the cell scans r + rmax and a
+  // few clearances (deepest()), the cavity pass's nearest_disks() 3 rmax.
   static constexpr double kImageReach = 3;
   std::int32_t add_node(double x, double y, double r) {
     if (wrap().any()) {
@@ -356,30 +318,20 @@ class BoundaryFront {
     return true;
   }
 
-  // A shear cell (periodic in x, walls at the bottom and top): a disk of radius r on the bottom
-  // wall and one of a second drawn radius on the top wall, each at a random x, with a gap on each
-  // side along its wall (before and after it): the first layer grows along each wall both ways,
-  // around the cell, and the front moves inwards from both, as from a domain's walls. (The top
-  // disk is left out if it would not fit: the cell is then thinner than the two disks.)
+  // A shear cell's first disks (seed_on_walls()), each with a gap before and after it along its
+  // wall: the first layer grows along each wall both ways, around the cell.
   bool seed_walls(double r) {
-    const std::array<std::int32_t, 2> wall{wall_id(0), wall_id(1)};
     const double r2 = draw();
-    const double bottom = r + frame_.clearance;
-    const double top = frame_.height - r2 - frame_.clearance;
-    if (!(bottom + r <= frame_.height)) {
-      return false;
+    const std::array<std::optional<Point>, 2> at = seed_on_walls(frame_, rng_, r, r2);
+    for (std::size_t k = 0; k < 2; ++k) {
+      if (at[k]) {
+        const std::int32_t n = add_node(at[k]->x, at[k]->y, k == 0 ? r : r2);
+        area_ += k == 1 ? r2 * r2 : 0;
+        push_gap(Gap{wall_id(k), n});
+        push_gap(Gap{n, wall_id(k)});
+      }
     }
-    const std::int32_t a = add_node(frame_.width * rng_.uniform(), bottom, r);
-    push_gap(Gap{wall[0], a});
-    push_gap(Gap{a, wall[0]});
-    const double x2 = frame_.width * rng_.uniform();
-    if (top > bottom && obstacles_.deepest<true>(elements_, probe(x2, top, r2)) == kNone) {
-      const std::int32_t b = add_node(x2, top, r2);
-      area_ += r2 * r2;
-      push_gap(Gap{wall[1], b});
-      push_gap(Gap{b, wall[1]});
-    }
-    return true;
+    return at[0].has_value();
   }
 
   // ------------------------------------------------------------------------------------------
@@ -512,7 +464,7 @@ class BoundaryFront {
         // closed over the disk (kClose).
         result.capped = true;
         result.cap = pocket(elements_, x, y, d);
-        if (result.cap < frame_.rmin) {
+        if (result.cap < close_below_) {
           moves = kClose;
         }
       }
@@ -615,6 +567,7 @@ class BoundaryFront {
   RadiusClasses<kClasses> classes_;
   Box box_;                      // the polygon's box (local coordinates) grown by the clearance
   Box cell_;                     // the polygon's box (a periodic cell's bounds, for keep_in_cell())
+  double close_below_ = 0;       // an interior front gap closes over a blocker whose pocket is below this
   std::size_t fixed_bytes_ = 0;  // the grid's and the wall lists', for the memory limit
   double area_ = 0;
   double polygon_area_ = 0;  // shoelace, for the seeding rule

@@ -123,6 +123,20 @@ Seeding seed_periodic_cell(const RunFrame& frame, Periodicity periodicity) {
   return s;
 }
 
+std::array<std::optional<Point>, 2> seed_on_walls(const RunFrame& frame, Rng& rng, double r, double r2) {
+  std::array<std::optional<Point>, 2> at;
+  const double bottom = r + frame.clearance;
+  if (bottom + r + frame.clearance <= frame.height) {
+    at[0] = Point{frame.width * rng.uniform(), bottom};
+  }
+  const double top = frame.height - r2 - frame.clearance;
+  const double x2 = frame.width * rng.uniform();
+  if (at[0] && top - bottom >= r + r2 + frame.clearance) {
+    at[1] = Point{x2, top};
+  }
+  return at;
+}
+
 std::optional<Point> seed_pair_at(Obstacles& obstacles, const Elements& elements, const RunFrame& frame, Rng& rng,
                                   double r, double r2) {
   for (int t = 0; t < kSeedTries; ++t) {

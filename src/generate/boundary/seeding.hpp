@@ -5,6 +5,7 @@
 // disks starts one inside. Set-up and rare: out of line.
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <optional>
@@ -44,6 +45,12 @@ struct Seeding {
 /// 4 rmax beyond the cell on either side so that a disk near a periodic side, or its image, has
 /// its foot on them. No corner and no first gap: seeds start the front (boundary_front.cpp).
 [[nodiscard]] Seeding seed_periodic_cell(const RunFrame& frame, Periodicity periodicity);
+
+/// A shear cell's first disks (local centres): one of radius r on the bottom wall and one of
+/// radius r2 on the top wall, each at a random x, the clearance from its wall. The top one is
+/// absent if the cell is lower than the two disks stacked (r + r2 and three clearances), the
+/// bottom one if it is lower than that disk.
+[[nodiscard]] std::array<std::optional<Point>, 2> seed_on_walls(const RunFrame& frame, Rng& rng, double r, double r2);
 
 /// A place inside the polygon for a seed pair: a disk of radius r at the point returned and one of
 /// radius r2 beside it, to the right, apart by the clearance, both clear of every element. Tried
