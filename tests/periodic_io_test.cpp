@@ -73,23 +73,27 @@ TEST(PeriodicIo, LammpsDeckOfAPeriodicCell) {
   EXPECT_EQ(files[0].name, "deck.data");
   EXPECT_NE(files[0].text.find("3 atoms\n1 atom types"), std::string::npos) << files[0].text;  // no wall disks
   EXPECT_NE(files[1].text.find("boundary p p p\n"), std::string::npos);
-  EXPECT_EQ(files[1].text.find("wall/gran"), std::string::npos);  // neither wall planes
-  EXPECT_EQ(files[1].text.find("freeze"), std::string::npos);     // nor frozen wall disks
+  EXPECT_EQ(files[1].text.find("wall/gran"), std::string::npos);    // neither wall planes
+  EXPECT_EQ(files[1].text.find("freeze"), std::string::npos);       // nor frozen wall disks
+  EXPECT_EQ(files[1].text.find("fix gravity"), std::string::npos);  // nothing holds a torus up
   const fp::Domain shear = fp::Domain::periodic(fp::Box{0, 0, 10, 10}, fp::Periodicity::x);
   const std::vector<fp::DeckFile> shear_files = fp::make_deck(shear, kShear, {}, options);
   EXPECT_NE(shear_files[0].text.find("3 atoms\n1 atom types"), std::string::npos);
   EXPECT_NE(shear_files[1].text.find("boundary p f p\n"), std::string::npos);
   EXPECT_NE(shear_files[1].text.find("wall/gran hooke/history"), std::string::npos);
   EXPECT_NE(shear_files[1].text.find(" yplane 0 10\n"), std::string::npos);
+  EXPECT_NE(shear_files[1].text.find("fix gravity free gravity 9.81 vector 0 -1 0\n"), std::string::npos);
   options.simulator = fp::Simulator::liggghts;
   const std::vector<fp::DeckFile> liggghts = fp::make_deck(torus, kCrossing, {}, options);
   ASSERT_EQ(liggghts.size(), 3u);  // deck.data, in.frontpack, domain.wkt: no mesh
   EXPECT_NE(liggghts[1].text.find("boundary p p p\n"), std::string::npos);
   EXPECT_EQ(liggghts[1].text.find("wall/gran"), std::string::npos);
+  EXPECT_EQ(liggghts[1].text.find("fix gravity"), std::string::npos);
   const std::string liggghts_shear = fp::make_deck(shear, kShear, {}, options)[1].text;
   EXPECT_NE(liggghts_shear.find("boundary p f p\n"), std::string::npos);
   EXPECT_NE(liggghts_shear.find("primitive type 2 yplane 0\n"), std::string::npos);
   EXPECT_NE(liggghts_shear.find("primitive type 2 yplane 10\n"), std::string::npos);
+  EXPECT_NE(liggghts_shear.find("fix gravity all gravity 9.81 vector 0 -1 0\n"), std::string::npos);
 }
 
 TEST(PeriodicIo, YadeDeckOfAPeriodicCell) {
@@ -102,10 +106,12 @@ TEST(PeriodicIo, YadeDeckOfAPeriodicCell) {
   EXPECT_NE(torus_script.find("CELL = (0, 0, 10, 10)"), std::string::npos);
   EXPECT_NE(torus_script.find("RINGS = []\n"), std::string::npos);  // no wall facets
   EXPECT_EQ(torus_script.find("WALLS"), std::string::npos);
+  EXPECT_NE(torus_script.find("NewtonIntegrator(damping=0.3, gravity=(0, 0, 0))"), std::string::npos);
   const fp::Domain shear = fp::Domain::periodic(fp::Box{0, 0, 10, 10}, fp::Periodicity::x);
   const std::string shear_script = fp::make_deck(shear, kShear, {}, options)[1].text;
   EXPECT_NE(shear_script.find("for (ax, ay), (bx, by) in WALLS:"), std::string::npos);
   EXPECT_NE(shear_script.find("LY = CELL[3] - CELL[1] + 2 * HALF_HEIGHT"), std::string::npos);
+  EXPECT_NE(shear_script.find("NewtonIntegrator(damping=0.3, gravity=(0, -9.81, 0))"), std::string::npos);
 }
 
 }  // namespace

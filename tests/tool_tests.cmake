@@ -257,6 +257,25 @@ frontpack_tool_check(stats_voids 0
 frontpack_tool_check(stats_bad_hole_radius 5 "--hole-radius '-1': expected a finite number > 0"
   ARGS stats ${SQ} ${TD}/good.csv --hole-radius=-1)
 frontpack_tool_check(stats_malformed 7 "malformed_line\\.csv:4:" ARGS stats ${SQ} ${TD}/malformed_line.csv)
+
+# stats --periodic: a periodic fill (the closed form) measured as a torus. No walls, so no band
+# (null figures), no wall contact, every sample in the profile's last bin, and all 7 x 7 squares
+# of 8 rmax (0.32) kept; the seam's squares (docs/periodic.md) make the 1st percentile 0.69.
+set(O ${TOOL_OUT}/stats_periodic_fill)
+frontpack_tool_check(stats_periodic_fill 0 "certified: [0-9]+ generated, 0 culled" FILES ${O}/p.csv
+  ARGS fill --periodic 2,2 --radius uniform:0.02,0.04 --seed 1 --method closed -o ${O}/p.csv)
+set_tests_properties(tool.stats_periodic_fill PROPERTIES FIXTURES_SETUP periodic_fill_csv)
+frontpack_tool_check(stats_periodic 0
+  "fraction: +0\\.8[0-9]+ overall, 0\\.8[0-9]+ interior \\(\\+/- 0\\.[0-9]+, no walls\\).*, 0 wall contacts, "
+  FILES ${TOOL_OUT}/stats_periodic/s.json
+  JSON ${TOOL_OUT}/stats_periodic/s.json "domain/periodicity=^xy$" "walls=^OFF$" "band_fraction=^$"
+       "band_fraction_error=^$" "band_median_by_area=^$" "segregation_ks_by_area=^$" "band_disks=^0$"
+       "wall_contacts=^0$" "interior_fraction=^0\\.8" "mean_coordination=^[34]\\." "rattlers=^[0-9]+$"
+       "coverage_profile/0/samples=^0$" "coverage_profile/5/samples=^0$" "coverage_profile/6/samples=^[1-9][0-9]+$"
+       "cell_coverage/cells=^49$" "cell_coverage/p1=^0\\.[678]" "cell_coverage/p50=^0\\.8" "largest_empty_circle/radius_over_rmax=^0\\."
+       "holes/0/radius=^0\\.0[234]"
+  ARGS stats --periodic 2,2 ${TOOL_OUT}/stats_periodic_fill/p.csv --json ${TOOL_OUT}/stats_periodic/s.json)
+set_tests_properties(tool.stats_periodic PROPERTIES FIXTURES_REQUIRED periodic_fill_csv)
 frontpack_tool_check(fill_json_unwritable 2 "cannot write '/nonexistent/dir/s\\.json'"
   NO_FILES ${TOOL_OUT}/fill_json_unwritable/p.csv
   ARGS fill ${S}/l_shape.wkt -o ${TOOL_OUT}/fill_json_unwritable/p.csv --json /nonexistent/dir/s.json)

@@ -25,11 +25,15 @@ std::string fmt4(double v) {
 }
 
 Json domain_json(const std::string& source, const frontpack::Domain& domain) {
-  return Json{{"source", source},
-              {"area", domain.area()},
-              {"polygons", domain.num_polygons()},
-              {"holes", domain.num_holes()},
-              {"vertices", domain.num_vertices()}};
+  Json j{{"source", source},
+         {"area", domain.area()},
+         {"polygons", domain.num_polygons()},
+         {"holes", domain.num_holes()},
+         {"vertices", domain.num_vertices()}};
+  if (domain.periodicity() != frontpack::Periodicity::none) {
+    j["periodicity"] = frontpack::to_string(domain.periodicity());
+  }
+  return j;
 }
 
 namespace {
@@ -85,11 +89,14 @@ void add_void_json(Json& j, const frontpack::PackingStats& s) {
 }  // namespace
 
 Json stats_json(const frontpack::PackingStats& s) {
+  // Without walls (a cell periodic in x and y) there is no band: its figures are null.
+  const auto band = [&s](double v) { return s.walls ? Json(v) : Json(nullptr); };
   Json j{{"packing_fraction", s.packing_fraction},
          {"interior_fraction", s.interior_fraction},
          {"interior_fraction_error", s.interior_error},
-         {"band_fraction", s.band_fraction},
-         {"band_fraction_error", s.band_error},
+         {"walls", s.walls},
+         {"band_fraction", band(s.band_fraction)},
+         {"band_fraction_error", band(s.band_error)},
          {"band_width", s.band_width},
          {"void_ratio", std::isfinite(s.void_ratio) ? Json(s.void_ratio) : Json(nullptr)},
          {"mean_coordination", s.mean_coordination},
@@ -99,9 +106,9 @@ Json stats_json(const frontpack::PackingStats& s) {
          {"rattlers", s.rattlers},
          {"contact_gap", s.contact_gap},
          {"band_disks", s.band_disks},
-         {"band_median_by_area", s.band_median_area},
+         {"band_median_by_area", band(s.band_median_area)},
          {"inside_median_by_area", s.inside_median_area},
-         {"segregation_ks_by_area", s.segregation_ks_area},
+         {"segregation_ks_by_area", band(s.segregation_ks_area)},
          {"radius", sizes_json(s.sizes)}};
   add_void_json(j, s);
   return j;
@@ -155,7 +162,7 @@ std::string fraction_line(const frontpack::PackingStats& s) {
   line.append(" overall");
   if (s.interior_samples > 0) {
     line.append(", ").append(fmt4(s.interior_fraction)).append(" interior (+/- ").append(fmt4(s.interior_error));
-    line.append(", farther than ").append(fmt(s.band_width)).append(" from the boundary)");
+    line.append(s.walls ? ", farther than " + fmt(s.band_width) + " from the boundary)" : ", no walls)");
   }
   if (s.band_samples > 0) {
     line.append(", ").append(fmt4(s.band_fraction)).append(" in the band");

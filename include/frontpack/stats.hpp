@@ -59,6 +59,20 @@
 //   centre (so it is wholly in the interior). Its covered fraction is exact: the sum of the
 //   disks' intersection areas with it (disks assumed not to overlap), in floating point.
 //
+// A periodic cell (Domain::periodic): the disks meet the images of the others across the periodic
+// sides, and the boundary is the real walls alone (none for Periodicity::xy, the bottom and top
+// for Periodicity::x). Contacts across a side count once; wall contacts are with the walls;
+// distances (band, interior disks, coverage profile, cell coverage, clearance) are to the walls,
+// infinite without any: a cell periodic in x and y has no band (`walls` false, every sample and
+// disk interior, the profile's samples all in its last bin, the band and segregation figures 0).
+// A disk covers the cell's points within its radius across a side too; the cell coverage's
+// squares go on across a periodic side (the last one wraps around, overlapping the first when
+// the period is not a multiple of 8 rmax), none dropped there; the clearance measures to the
+// nearest image, so the largest empty circle and the holes may wrap across a side (the centre is
+// reported in the cell). The images taken are those within the reach each measure needs; a cell
+// narrower than that reach gets images of images (several periods), so any width is measured,
+// at a cost growing as (reach / period)^2 (beyond 1000 periods: std::invalid_argument).
+//
 // Cost: linear in the disks and the samples (uniform grids): about 0.5 s per million samples plus
 // 0.1 s per 50,000 disks (one core of an AMD EPYC). On a 958,549-disk packing of the unit
 // square (uniform radii 0.0004-0.0006, docs/distributions.md has the command) the largest empty
@@ -229,6 +243,7 @@ struct PackingStats {
   double packing_fraction = 0;
   double void_ratio = 0;  ///< (1 - phi) / phi (infinity for no disks)
 
+  bool walls = true;             ///< false: a cell periodic in x and y, no boundary hence no band
   double band_width = 0;         ///< the width used
   double interior_fraction = 0;  ///< sampled; 0 if the interior got no sample
   double band_fraction = 0;      ///< sampled; 0 if the band got no sample

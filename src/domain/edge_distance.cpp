@@ -8,13 +8,28 @@
 
 namespace frontpack::detail {
 
-EdgeDistanceIndex::EdgeDistanceIndex(const Domain& domain, double h) {
-  for (const Polygon& p : domain.polygons()) {
-    add_ring(p.outer);
-    for (const Ring& hole : p.holes) {
-      add_ring(hole);
+void EdgeDistanceIndex::add_walls(const Domain& domain) {
+  if (domain.periodicity() == Periodicity::none) {
+    for (const Polygon& p : domain.polygons()) {
+      add_ring(p.outer);
+      for (const Ring& hole : p.holes) {
+        add_ring(hole);
+      }
+    }
+    return;
+  }
+  if (domain.periodicity() == Periodicity::x) {
+    const Box c = domain.bbox();  // the cell
+    const double lx = c.width();
+    for (const double y : {c.ymin, c.ymax}) {
+      a_.push_back({c.xmin - lx, y});
+      b_.push_back({c.xmax + lx, y});
     }
   }
+}
+
+EdgeDistanceIndex::EdgeDistanceIndex(const Domain& domain, double h) {
+  add_walls(domain);
   const Box b = domain.bbox();
   // At most about 4 million cells (and at least one).
   const double area = std::max(b.width() * b.height(), 0.0);
@@ -97,6 +112,9 @@ EdgeDistanceIndex::EdgeDistanceIndex(const Domain& domain, double h) {
 }
 
 double EdgeDistanceIndex::distance(Point p, double cap) const {
+  if (a_.empty()) {
+    return cap;
+  }
   const std::size_t ci = column(p.x);
   const std::size_t cj = row(p.y);
   const std::size_t first = empty_rings_[cj * nx_ + ci];

@@ -18,9 +18,16 @@ namespace frontpack::detail {
 
 class EdgeDistanceIndex {
  public:
-  /// Indexes every edge of the domain's rings in cells of side h (at least the side of about 4
-  /// million cells over the domain's bounding box).
+  /// Indexes the domain's walls in cells of side h (at least the side of about 4 million cells
+  /// over the domain's bounding box). The walls are every edge of a polygonal domain's rings; in a
+  /// periodic cell only the real walls (domain/periodic_cell.hpp): none for Periodicity::xy, the
+  /// bottom and top lines for Periodicity::x, each extended by a period beyond either side so that
+  /// the distance of any point within a period of the cell (an image) is its distance to the line.
+  /// A periodic side is no wall: the plane continues across it.
   EdgeDistanceIndex(const Domain& domain, double h);
+
+  /// Whether there is any wall (false for a cell periodic in x and y).
+  [[nodiscard]] bool has_walls() const noexcept { return !a_.empty(); }
 
   /// Calls f(closest point, distance) for each edge (possibly repeated) listed in the cells
   /// within d of p; every edge at distance <= d from p is among them.
@@ -43,7 +50,8 @@ class EdgeDistanceIndex {
 
   /// min(cap, the distance from p to the nearest edge), for cap > 0: the cells are visited in
   /// rings around p's cell, from the first ring that lists an edge (a distance transform of the
-  /// grid says which), until the rings left are farther than the nearest edge found.
+  /// grid says which), until the rings left are farther than the nearest edge found. Without
+  /// walls: cap.
   [[nodiscard]] double distance(Point p, double cap) const;
 
   /// Whether the boundary comes closer than d to p.
@@ -60,6 +68,7 @@ class EdgeDistanceIndex {
       b_.push_back(ring[(k + 1) % ring.size()]);
     }
   }
+  void add_walls(const Domain& domain);
   [[nodiscard]] std::size_t column(double x) const { return cell_index(x, x0_, inv_h_, nx_); }
   [[nodiscard]] std::size_t row(double y) const { return cell_index(y, y0_, inv_h_, ny_); }
   [[nodiscard]] Point closest(std::uint32_t e, Point p) const {

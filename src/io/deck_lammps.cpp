@@ -12,12 +12,14 @@ namespace frontpack::detail {
 
 namespace {
 
-// The script's end, the same for walled and periodic decks: gravity on the free disks, 2D
-// integration, the timestep, thermo output, the 17-digit dump and the run.
-void write_motion_and_run(std::ostream& in, const DeckPhysics& p, std::uint64_t steps) {
+// The script's end, the same for walled and periodic decks: gravity on the free disks (unless
+// `gravity` is false), 2D integration, the timestep, thermo output, the 17-digit dump and the run.
+void write_motion_and_run(std::ostream& in, const DeckPhysics& p, std::uint64_t steps, bool gravity) {
   const std::uint64_t every = std::max<std::uint64_t>(1, steps / 10);
-  in << "fix gravity free gravity " << format_double(p.gravity) << " vector 0 -1 0\n"
-     << "fix move free nve/sphere disc\n"
+  if (gravity) {
+    in << "fix gravity free gravity " << format_double(p.gravity) << " vector 0 -1 0\n";
+  }
+  in << "fix move free nve/sphere disc\n"
      << "fix plane all enforce2d\n"
      << "# Timestep: the contact time pi sqrt(m_eff / kn) of the two lightest disks (m_eff = "
      << format_double(p.mass_min / 2) << ") / 50.\n"
@@ -86,10 +88,11 @@ std::vector<DeckFile> periodic_lammps_deck(const Domain& domain, std::span<const
     in << "fix walls free wall/gran hooke/history " << format_double(p.kn) << " NULL " << format_double(p.gamma_n)
        << " NULL 0.5 1 yplane " << format_double(cell.ymin) << ' ' << format_double(cell.ymax) << "\n";
   }
-  in << (torus ? "# In a torus gravity accelerates every disk alike (no wall holds them): delete this fix for a\n"
-                 "# representative-volume run.\n"
-               : "");
-  write_motion_and_run(in, p, options.steps);
+  if (torus) {
+    in << "# No gravity: in a torus no wall holds the disks, and gravity would carry the whole packing along\n"
+          "# at once.\n";
+  }
+  write_motion_and_run(in, p, options.steps, !torus);
   return {{"deck.data", data.str()}, {"in.frontpack", in.str()}};
 }
 
@@ -161,7 +164,7 @@ std::vector<DeckFile> lammps_deck(const Domain& domain, std::span<const Disk> di
      << "neighbor " << format_double(0.5 * p.rmin) << " bin\n"
      << "neigh_modify delay 0 every 1 check yes exclude type " << w << ' ' << w << "\n"
      << "fix walls wall freeze\n";
-  write_motion_and_run(in, p, options.steps);
+  write_motion_and_run(in, p, options.steps, true);
   return {{"deck.data", data.str()}, {"in.frontpack", in.str()}};
 }
 

@@ -145,8 +145,9 @@ std::vector<DeckFile> liggghts_deck(const Domain& domain, std::span<const Disk> 
   in << "# Timestep: the contact time pi sqrt(m_eff / k) of the two lightest disks (m_eff = "
      << format_double(p.mass_min / 2) << ")\n"
      << "# at the Hertz stiffness k = 2 E* sqrt(R* d) of that overlap, / 50.\n"
-     << "timestep " << format_double(p.dt_hertz) << "\n"
-     << "fix gravity all gravity " << format_double(p.gravity) << " vector 0 -1 0\n";
+     << "timestep " << format_double(p.dt_hertz) << "\n";
+  in << (torus ? "# No gravity: in a torus no wall holds the disks (the whole packing would fall together).\n"
+               : "fix gravity all gravity " + format_double(p.gravity) + " vector 0 -1 0\n");
   if (!periodic) {
     in << "fix walls all mesh/surface file walls.stl type " << w << "\n"
        << "fix wall all wall/gran model hertz tangential history mesh n_meshes 1 meshes walls\n";

@@ -28,7 +28,8 @@ std::vector<DeckFile> yade_deck(const Domain& domain, std::span<const Disk> disk
   py << "# Yade script written by frontpack " << version_string
      << " (run: yade -n -x run.py [STEPS], in this directory)\n"
      << "# Loads packing.txt (one material per type, O.materials[type - 1]), builds the walls as facets from\n"
-     << "# the domain's edges (vertical quads), holds the spheres in the plane z = 0, applies gravity along -y.\n"
+     << "# the domain's edges (vertical quads), holds the spheres in the plane z = 0, applies gravity along -y\n"
+     << "# (none in a cell periodic in x and y: no wall would hold the spheres).\n"
      << "# Units: those of the domain and densities (SI: m, kg, s). " << mass_note(options) << ";\n"
      << "# the masses and the (disc) inertia are set per body, since Yade's materials are 3D.\n"
      << "# Contacts: FrictMat, E = kn / rmin = " << format_double(young) << " (kn = " << format_double(p.kn)
@@ -115,7 +116,9 @@ std::vector<DeckFile> yade_deck(const Domain& domain, std::span<const Disk> disk
      << "    InteractionLoop([Ig2_Sphere_Sphere_ScGeom(), Ig2_Facet_Sphere_ScGeom()],\n"
      << "                    [Ip2_FrictMat_FrictMat_FrictPhys()],\n"
      << "                    [Law2_ScGeom_FrictPhys_CundallStrack()]),\n"
-     << "    NewtonIntegrator(damping=0.3, gravity=(0, " << format_double(-p.gravity) << ", 0)),\n"
+     // No gravity in a torus: no wall holds the spheres, and it would carry the whole packing along.
+     << "    NewtonIntegrator(damping=0.3, gravity=(0, "
+     << format_double(domain.periodicity() == Periodicity::xy ? 0.0 : -p.gravity) << ", 0)),\n"
      << "]\n"
      << "O.dt = " << format_double(p.dt_hooke) << "\n"
      << (periodic ? "O.run(1, True)\n"

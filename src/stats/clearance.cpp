@@ -19,18 +19,19 @@ constexpr double kReach = 0.99;
 
 }  // namespace
 
-Clearance::Clearance(const Domain& domain, std::span<const Disk> disks, const EdgeDistanceIndex& edges)
-    : domain_(domain), disks_(disks), edges_(edges), stamp_(disks.size(), 0) {
+Clearance::Clearance(const Domain& domain, const DiskImages& images, const EdgeDistanceIndex& edges)
+    : domain_(domain), periods_(domain), disks_(images.all()), edges_(edges), stamp_(images.all().size(), 0) {
+  const std::span<const Disk> disks = images.all();
   const Box b = domain.bbox();
   const double w = b.width();
   const double h = b.height();
   double sum_r = 0;
-  for (const Disk& d : disks) {
+  for (const Disk& d : disks.first(images.originals())) {
     sum_r += d.radius;
   }
-  const double n = static_cast<double>(disks.size());
+  const double n = static_cast<double>(images.originals());
   // About one cell per disk in a dense packing, never more than 4 per disk (plus 16).
-  const double mean_side = disks.empty() ? 0 : 2 * sum_r / n;
+  const double mean_side = images.originals() == 0 ? 0 : 2 * sum_r / n;
   side_ = std::max(mean_side, std::sqrt(w * h / (4 * n + 16)));
   if (!(side_ > 0) || !std::isfinite(side_)) {
     side_ = std::max({w, h, 1e-300});
@@ -173,7 +174,7 @@ SquareBounds Clearance::bound(const Square& q, std::span<const std::uint32_t> li
   }
   Side side = known;
   if (side == Side::unknown && std::min(v, dist) >= threshold) {
-    const Location at = domain_.locate({q.x, q.y});
+    const Location at = locate_wrapped(domain_, periods_, {q.x, q.y});
     side = at == Location::inside ? Side::inside : at == Location::outside ? Side::outside : Side::unknown;
     r.certain = true;  // on the boundary: f = min(v, 0)
   }

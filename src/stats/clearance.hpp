@@ -7,6 +7,14 @@
 //
 // Floating point (measurements): distances are computed in double, a few ulps from the exact
 // ones; whether a point is inside the domain is decided exactly (Domain::locate).
+//
+// A periodic cell: the disks are DiskImages::all() (stats/periodic_images.hpp), the boundary its
+// walls alone (domain/edge_distance.hpp), and every point is located as its image in the cell. The
+// grid covers the cell and, when the period is not a multiple of the grid's side, part of a cell
+// more beyond its high sides, where f repeats its values near the low sides. At a point of the
+// grid, f computed from the images is the true f wherever it is at most the images' reach minus
+// rmax and the grid's side (the nearest disk of the plane is then among them: the point is within
+// a side of the cell), and never below it elsewhere.
 #pragma once
 
 #include <cstddef>
@@ -17,6 +25,7 @@
 #include "domain/edge_distance.hpp"
 #include "frontpack/domain.hpp"
 #include "frontpack/geometry.hpp"
+#include "stats/periodic_images.hpp"
 
 namespace frontpack::detail {
 
@@ -42,13 +51,20 @@ struct SquareBounds {
 
 class Clearance {
  public:
-  /// A grid of cells of side about two mean radii (coarser for sparse packings) over the
-  /// domain's bounding box, each disk listed in every cell its bounding box meets.
-  Clearance(const Domain& domain, std::span<const Disk> disks, const EdgeDistanceIndex& edges);
+  /// A grid of cells of side about two mean radii of the disks (images.all() without the images;
+  /// coarser for sparse packings) over the domain's bounding box, each disk and image listed in
+  /// every cell its bounding box meets.
+  Clearance(const Domain& domain, const DiskImages& images, const EdgeDistanceIndex& edges);
 
   [[nodiscard]] std::size_t nx() const noexcept { return nx_; }
   [[nodiscard]] std::size_t ny() const noexcept { return ny_; }
   [[nodiscard]] double side() const noexcept { return side_; }
+  /// The lower left corner of the grid.
+  [[nodiscard]] Point origin() const noexcept { return {x0_, y0_}; }
+  [[nodiscard]] const Periods& periods() const noexcept { return periods_; }
+  /// The grid column and row of a coordinate (clamped to the grid).
+  [[nodiscard]] std::size_t column(double x) const noexcept;
+  [[nodiscard]] std::size_t row(double y) const noexcept;
   /// The grid cell (i, j) as a square.
   [[nodiscard]] Square cell(std::size_t i, std::size_t j) const noexcept;
 
@@ -68,10 +84,8 @@ class Clearance {
                      std::vector<std::uint32_t>* keep) const;
 
  private:
-  [[nodiscard]] std::size_t column(double x) const noexcept;
-  [[nodiscard]] std::size_t row(double y) const noexcept;
-
   const Domain& domain_;
+  Periods periods_;
   std::span<const Disk> disks_;
   const EdgeDistanceIndex& edges_;
   double side_ = 1;

@@ -9,11 +9,34 @@
 
 namespace frontpack::detail {
 
+namespace {
+
+// Whether the pair of disks a and d of images.all() is the one copy of their contact that counts.
+bool counted(const DiskImages& images, std::size_t a, std::size_t d) noexcept {
+  const std::size_t n = images.originals();
+  if (a < n && d < n) {
+    return true;
+  }
+  if (a >= n && d >= n) {
+    return false;
+  }
+  const std::size_t original = std::min(a, d);
+  const std::size_t image = std::max(a, d);
+  const std::size_t source = images.source(image);
+  return original < source || (original == source && images.positive_shift(image));
+}
+
+}  // namespace
+
 // Disk-disk contacts. Each disk is listed in every cell its box, grown by half the tolerance,
 // meets; a pair is examined only in the cell that holds the lower-left corner of the
-// intersection of the two boxes, so once. Linear for any ratio of radii.
-void count_contacts(std::span<const Disk> disks, double tol, PackingStats& s, std::vector<std::size_t>& degree,
+// intersection of the two boxes, so once. Linear for any ratio of radii. In a periodic cell the
+// images take part: a contact across a side is counted once, between a disk and the image of a
+// later disk (or of itself, at a positive shift); the same contact between other copies of the
+// two disks is a translate of that one.
+void count_contacts(const DiskImages& images, double tol, PackingStats& s, std::vector<std::size_t>& degree,
                     const std::stop_token& stop) {
+  const std::span<const Disk> disks = images.all();
   const std::size_t n = disks.size();
   Box b;
   double sum_r = 0;
@@ -75,11 +98,16 @@ void count_contacts(std::span<const Disk> disks, double tol, PackingStats& s, st
         if (owner != c) {
           continue;
         }
+        const std::size_t ka = members[p];
+        const std::size_t kd = members[q];
+        if (!counted(images, ka, kd)) {
+          continue;
+        }
         const double gap = std::hypot(a.centre.x - d.centre.x, a.centre.y - d.centre.y) - a.radius - d.radius;
         if (gap <= tol) {
           ++s.contacts;
-          ++degree[members[p]];
-          ++degree[members[q]];
+          ++degree[images.source(ka)];
+          ++degree[images.source(kd)];
         }
         if (gap < -tol) {
           ++s.overlaps;

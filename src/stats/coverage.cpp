@@ -56,6 +56,7 @@ void measure_cell_coverage(const Domain& domain, std::span<const Disk> disks, co
   if (!(side > 0) || !(b.width() > 0) || !(b.height() > 0)) {
     return;
   }
+  const Periods periods(domain);
   const double gx = std::ceil(b.width() / side);
   const double gy = std::ceil(b.height() / side);
   if (!(gx * gy <= 16e6)) {
@@ -65,7 +66,10 @@ void measure_cell_coverage(const Domain& domain, std::span<const Disk> disks, co
   const std::size_t ny = std::max<std::size_t>(static_cast<std::size_t>(gy), 1);
   // A cell is interior when its centre is inside the domain and no edge comes within band_width
   // plus the half-diagonal of it (with a relative margin of 1e-9 for the rounding of the
-  // distances): then the boundary misses the cell and every point of it is farther than w.
+  // distances): then the boundary misses the cell and every point of it is farther than w. In a
+  // periodic cell the edges are the walls alone and a periodic side drops no square: the squares
+  // go on across it, the last one wrapping around (it overlaps the first when the period is not a
+  // multiple of the side), and the images of the disks cover its part beyond the side.
   const double reach = (w + side * std::numbers::sqrt2 / 2) * (1 + 1e-9);
   std::vector<std::int64_t> index(nx * ny, -1);
   std::vector<double> covered;
@@ -73,7 +77,7 @@ void measure_cell_coverage(const Domain& domain, std::span<const Disk> disks, co
     throw_if_stopped(stop, c);
     const Point centre{b.xmin + (static_cast<double>(c % nx) + 0.5) * side,
                        b.ymin + (static_cast<double>(c / nx) + 0.5) * side};
-    if (edges.distance(centre, reach) >= reach && domain.locate(centre) == Location::inside) {
+    if (edges.distance(centre, reach) >= reach && locate_wrapped(domain, periods, centre) == Location::inside) {
       index[c] = static_cast<std::int64_t>(covered.size());
       covered.push_back(0);
     }

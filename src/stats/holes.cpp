@@ -9,6 +9,11 @@
 // leaves (squares touching at an edge or a corner are joined) that hold a leaf whose centre is
 // certified to have f >= rho: a hole where a disk of radius rho (1 + 1/32) fits is never
 // missed, and two holes are counted as one only when {f >= rho (1 - 1/16)} joins them.
+//
+// A periodic cell: {f >= rho} continues across a periodic side, and the grid's part beyond the
+// cell's high sides repeats the cell's low sides. A leaf is also joined with every leaf that its
+// translate by a period (one or both axes, either way) touches, so a hole across a side, or seen
+// twice in that part, is one component (the translate touches within a rounding margin).
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -113,6 +118,9 @@ class HoleSearch {
         }
       }
     }
+    if (f_.periods().any()) {
+      join_across_sides(parent, find, stop);
+    }
     std::vector<std::uint8_t> counted(leaves_.size(), 0);
     for (std::size_t k = 0; k < leaves_.size(); ++k) {
       if (leaves_[k].certified) {
@@ -131,6 +139,55 @@ class HoleSearch {
   std::vector<std::size_t> first_;  // grid cell c's leaves: [first_[c], first_[c + 1])
 
   static constexpr std::size_t kNone = ~std::size_t{0};
+
+  // A leaf's square.
+  [[nodiscard]] Box box_of(const Leaf& leaf) const noexcept {
+    const double a = std::ldexp(f_.side(), -leaf.depth);
+    const Point o = f_.origin();
+    const double x = o.x + static_cast<double>(leaf.x) * a;
+    const double y = o.y + static_cast<double>(leaf.y) * a;
+    return Box{x, y, x + a, y + a};
+  }
+
+  // Joins each leaf with the leaves its translates by a period touch (see the file's comment).
+  template <class Find>
+  void join_across_sides(std::vector<std::uint32_t>& parent, Find& find, const std::stop_token& stop) {
+    const Periods& p = f_.periods();
+    const Point o = f_.origin();
+    const double gx = o.x + static_cast<double>(f_.nx()) * f_.side();
+    const double gy = o.y + static_cast<double>(f_.ny()) * f_.side();
+    // The margin for the rounding of the leaves' corners and of the translation.
+    const double eps =
+        1e-9 * f_.side() + 0x1p-48 * std::max({std::abs(o.x), std::abs(o.y), std::abs(gx), std::abs(gy)});
+    const int jy = p.y ? 1 : 0;
+    for (std::size_t k = 0; k < leaves_.size(); ++k) {
+      throw_if_stopped(stop, k);
+      const Box b = box_of(leaves_[k]);
+      for (int j = -jy; j <= jy; ++j) {
+        for (int i = -1; i <= 1; ++i) {
+          const double tx = static_cast<double>(i) * p.lx;
+          const double ty = static_cast<double>(j) * p.ly;
+          const Box t{b.xmin + tx - eps, b.ymin + ty - eps, b.xmax + tx + eps, b.ymax + ty + eps};
+          if ((i == 0 && j == 0) || t.xmax < o.x || t.xmin > gx || t.ymax < o.y || t.ymin > gy) {
+            continue;
+          }
+          for (std::size_t r = f_.row(t.ymin); r <= f_.row(t.ymax); ++r) {
+            for (std::size_t c = f_.column(t.xmin); c <= f_.column(t.xmax); ++c) {
+              const std::size_t cell = r * f_.nx() + c;
+              for (std::size_t m = first_[cell]; m < first_[cell + 1]; ++m) {
+                const Box u = box_of(leaves_[m]);
+                if (u.xmin <= t.xmax && t.xmin <= u.xmax && u.ymin <= t.ymax && t.ymin <= u.ymax) {
+                  const std::uint32_t a = find(static_cast<std::uint32_t>(k));
+                  const std::uint32_t d = find(static_cast<std::uint32_t>(m));
+                  parent[std::max(a, d)] = std::min(a, d);
+                }
+              }
+            }
+          }
+        }
+      }
+    }
+  }
 
   // The leaf with these coordinates, if any: a binary search among its grid cell's leaves.
   [[nodiscard]] std::size_t find_leaf(int depth, std::int64_t x, std::int64_t y) const {

@@ -12,6 +12,7 @@
 
 #include "domain/edge_distance.hpp"
 #include "frontpack/stats.hpp"
+#include "stats/periodic_images.hpp"
 
 namespace frontpack::detail {
 
@@ -33,8 +34,8 @@ inline double weight(double x, double k) noexcept {
 }
 
 /// Disk-disk contacts within `tol`: s.contacts, s.overlaps, s.max_overlap; degree[k] counts disk
-/// k's contacts. Uses s.sizes.rmax.
-void count_contacts(std::span<const Disk> disks, double tol, PackingStats& s, std::vector<std::size_t>& degree,
+/// k's contacts (k < images.originals()). Uses s.sizes.rmax. The images must reach 2 rmax + tol.
+void count_contacts(const DiskImages& images, double tol, PackingStats& s, std::vector<std::size_t>& degree,
                     const std::stop_token& stop);
 
 /// Wall contacts of one disk: distinct closest points of the edges it touches within `tol`.
@@ -42,7 +43,8 @@ std::size_t wall_contacts(const EdgeDistanceIndex& edges, const Disk& d, double 
 
 /// The interior and band fractions by stratified sampling of about `samples` points, the band
 /// being the points within w of the boundary; with unit > 0 also the coverage profile in bins of
-/// `unit` (s.coverage_unit, s.coverage_profile).
+/// `unit` (s.coverage_unit, s.coverage_profile). In a periodic cell `disks` are DiskImages::all()
+/// with a reach of rmax at least.
 void sample_fractions(const Domain& domain, std::span<const Disk> disks, const EdgeDistanceIndex& edges, double w,
                       std::size_t samples, double unit, PackingStats& s, const std::stop_token& stop);
 
@@ -58,7 +60,8 @@ EmptyCircle largest_empty_circle(const Clearance& f, double tolerance, std::vect
 std::size_t count_holes(const Clearance& f, double rho, std::span<const double> cell_upper,
                         const std::stop_token& stop);
 
-/// The coverage of the interior cells of side 8 rmax (coverage.cpp).
+/// The coverage of the interior cells of side 8 rmax (coverage.cpp). In a periodic cell `disks`
+/// are DiskImages::all() with a reach of 9 rmax at least (a square wraps across a side).
 void measure_cell_coverage(const Domain& domain, std::span<const Disk> disks, const EdgeDistanceIndex& edges, double w,
                            double rmax, CellCoverage& out, const std::stop_token& stop);
 

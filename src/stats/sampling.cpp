@@ -27,10 +27,13 @@ double unit(std::uint64_t h) noexcept {
 // disks meeting the row are kept in an active list (disks sorted by their lowest y).
 //
 // The same points give the coverage profile: each point's distance to the boundary, as far as
-// 6 units, puts it in the bin [k, k + 1) units (k = 0..5) or in the last bin.
+// 6 units, puts it in the bin [k, k + 1) units (k = 0..5) or in the last bin. In a periodic cell
+// the distance is to the walls alone (domain/edge_distance.hpp): without walls every point is
+// interior and falls in the last bin; a point is covered by a disk or by an image of one.
 void sample_fractions(const Domain& domain, std::span<const Disk> disks, const EdgeDistanceIndex& edges, double w,
                       std::size_t samples, double bin_unit, PackingStats& s, const std::stop_token& stop) {
   const Box b = domain.bbox();
+  const Periods periods(domain);
   const double area = b.width() * b.height();
   if (samples == 0 || !(area > 0)) {
     return;
@@ -123,7 +126,7 @@ void sample_fractions(const Domain& domain, std::span<const Disk> disks, const E
     active.resize(keep);
     for (std::size_t i = 0; i < nx; ++i) {
       const Point p = points[i];
-      if (domain.locate(p) == Location::outside) {
+      if (locate_wrapped(domain, periods, p) == Location::outside) {
         continue;
       }
       const double d = edges.distance(p, cap);

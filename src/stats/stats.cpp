@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <limits>
 #include <numbers>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -18,6 +19,7 @@
 #include "common/stop.hpp"
 #include "stats/clearance.hpp"
 #include "stats/parts.hpp"
+#include "stats/periodic_images.hpp"
 
 namespace frontpack {
 
@@ -56,7 +58,12 @@ PackingStats measure_scaled(const Domain& domain, std::span<const Disk> disks, c
   for (double& rho : o.hole_radii) {
     rho *= k;
   }
-  PackingStats s = measure(Domain::from_polygons(std::move(polygons)), scaled, o);
+  const Box c = domain.bbox();
+  const Domain scaled_domain =
+      domain.periodicity() == Periodicity::none
+          ? Domain::from_polygons(std::move(polygons))
+          : Domain::periodic({c.xmin * k, c.ymin * k, c.xmax * k, c.ymax * k}, domain.periodicity());
+  PackingStats s = measure(scaled_domain, scaled, o);
   const double inv = 1 / k;
   s.domain_area = domain.area();
   s.disk_area = 0;
@@ -92,22 +99,85 @@ PackingStats measure_scaled(const Domain& domain, std::span<const Disk> disks, c
   return s;
 }
 
-// The largest empty circle, the holes and the cell coverage.
-void measure_voids(const Domain& domain, std::span<const Disk> disks, const EdgeDistanceIndex& edges,
-                   const StatsOptions& options, PackingStats& s) {
+// The hole radii asked for, or the defaults.
+std::vector<double> hole_radii(const StatsOptions& options, const PackingStats& s, std::size_t disks) {
   std::vector<double> radii = options.hole_radii;
-  if (radii.empty() && !disks.empty()) {
+  if (radii.empty() && disks > 0) {
     radii = {s.sizes.median_number, s.sizes.rmax};
   }
+  return radii;
+}
+
+// How far from a periodic cell the images of the disks must reach for the measures asked for:
+// rmax for the sampling (a disk covering a point of the cell), 2 rmax + the contact gap for the
+// contacts, 9 rmax for the cell coverage (a square reaching 8 rmax across a side, and a disk), and
+// for the clearance rmax + its grid's side (about 2 mean radii) + the largest value of f that
+// matters: 2 rmax for the largest empty circle's first try (measure_voids() widens the images
+// when it is larger), or the largest hole radius (f is at most half the cell's diagonal).
+double image_reach(const StatsOptions& options, const PackingStats& s, std::span<const double> radii,
+                   const detail::Periods& periods) {
+  const double rmax = s.sizes.rmax;
+  const double f_max = 0.5 * std::hypot(periods.lx, periods.ly);
+  double reach = options.samples > 0 ? rmax : 0;
+  if (options.contacts) {
+    reach = std::max(reach, 2 * rmax + s.contact_gap);
+  }
+  if (options.cell_coverage) {
+    reach = std::max(reach, 9 * rmax);
+  }
+  if (options.empty_circle) {
+    reach = std::max(reach, 5 * rmax);
+  }
+  if (options.holes) {
+    for (const double rho : radii) {
+      reach = std::max(reach, 3 * rmax + std::min(rho, f_max));
+    }
+  }
+  return reach;
+}
+
+// The largest empty circle, the holes and the cell coverage. `images`: the disks with their images
+// within `reach` of a periodic cell.
+void measure_voids(const Domain& domain, std::span<const Disk> disks, const detail::DiskImages& images, double reach,
+                   const EdgeDistanceIndex& edges, const StatsOptions& options, PackingStats& s) {
+  const std::vector<double> radii = hole_radii(options, s, disks.size());
   const bool holes = options.holes && !radii.empty();
-  if (options.empty_circle || holes) {
-    const detail::Clearance f(domain, disks, edges);
+  const detail::Periods periods(domain);
+  // A cell periodic in x and y without disks has no wall either: f is unbounded.
+  if ((options.empty_circle || holes) && (edges.has_walls() || !disks.empty())) {
+    std::optional<detail::DiskImages> wider;
+    std::optional<detail::Clearance> f;
+    f.emplace(domain, images, edges);
+    // f from the images is exact where it is at most reach - rmax - the grid's side
+    // (stats/clearance.hpp). Beyond, the nearest disk may be an image left out: then f is measured
+    // again with every image that can be the nearest, f being at most half the cell's diagonal
+    // (a disk's nearest translate is no farther; Periodicity::x: the nearer wall is no farther).
+    const double rmax = s.sizes.rmax;
+    const double exact_to = reach - rmax - f->side();
+    const double all = rmax + f->side() + 0.5 * std::hypot(periods.lx, periods.ly) * (1 + 1e-9);
+    const auto widen = [&] {
+      wider.emplace(periods, disks, all);
+      f.emplace(domain, *wider, edges);
+    };
+    const bool can_widen = periods.any() && all > reach;
+    const double largest_rho = holes ? *std::max_element(radii.begin(), radii.end()) : 0;
+    if (can_widen && !options.empty_circle && !(largest_rho <= exact_to)) {
+      widen();
+    }
     const Box b = domain.bbox();
     // 1% of the smallest radius; without disks a millionth of the domain's size.
     const double tolerance = disks.empty() ? 1e-6 * std::max(b.width(), b.height()) : 0.01 * s.sizes.rmin;
     std::vector<double> cell_upper;  // stays empty without the empty circle
     if (options.empty_circle) {
-      s.largest_empty_circle = detail::largest_empty_circle(f, tolerance, cell_upper, options.stop);
+      s.largest_empty_circle = detail::largest_empty_circle(*f, tolerance, cell_upper, options.stop);
+      // (The holes then need no more: a radius above the circle's upper bound has none.)
+      if (can_widen && !(s.largest_empty_circle.radius_upper <= exact_to)) {
+        widen();
+        s.largest_empty_circle = detail::largest_empty_circle(*f, tolerance, cell_upper, options.stop);
+      }
+      if (periods.any()) {
+        s.largest_empty_circle.centre = detail::wrap(periods, s.largest_empty_circle.centre);
+      }
     }
     if (holes) {
       for (const double rho : radii) {
@@ -118,12 +188,13 @@ void measure_voids(const Domain& domain, std::span<const Disk> disks, const Edge
           s.holes.push_back(s.holes.back());  // (the default radii of equal disks)
           continue;
         }
-        s.holes.push_back({rho, none ? 0 : detail::count_holes(f, rho, cell_upper, options.stop)});
+        s.holes.push_back({rho, none ? 0 : detail::count_holes(*f, rho, cell_upper, options.stop)});
       }
     }
   }
   if (options.cell_coverage && !disks.empty()) {
-    detail::measure_cell_coverage(domain, disks, edges, s.band_width, s.sizes.rmax, s.cell_coverage, options.stop);
+    detail::measure_cell_coverage(domain, images.all(), edges, s.band_width, s.sizes.rmax, s.cell_coverage,
+                                  options.stop);
   }
 }
 
@@ -172,14 +243,21 @@ PackingStats measure(const Domain& domain, std::span<const Disk> disks, const St
           : std::max(1e-9 * rmax, 0x1p-42 * std::min(domain.max_abs_coordinate() + 5 * rmax,
                                                      std::numeric_limits<double>::max()));  // (finite for any radius)
   const double w = s.band_width;
+  // The walls (a periodic cell's real walls alone) and the disks with their images across the
+  // periodic sides: what every measure below sees of the domain.
   const EdgeDistanceIndex edges(domain, w > 0 ? w : std::sqrt(domain.area()) / 64);
-  sample_fractions(domain, disks, edges, w, options.samples, options.coverage_profile ? rmax : 0, s, options.stop);
-  measure_voids(domain, disks, edges, options, s);
+  s.walls = edges.has_walls();
+  const detail::Periods periods(domain);
+  const double reach = image_reach(options, s, hole_radii(options, s, disks.size()), periods);
+  const detail::DiskImages images(periods, disks, reach);
+  sample_fractions(domain, images.all(), edges, w, options.samples, options.coverage_profile ? rmax : 0, s,
+                   options.stop);
+  measure_voids(domain, disks, images, reach, edges, options, s);
   if (disks.empty() || !options.contacts) {
     return s;
   }
   std::vector<std::size_t> degree(disks.size(), 0);
-  count_contacts(disks, s.contact_gap, s, degree, options.stop);
+  count_contacts(images, s.contact_gap, s, degree, options.stop);
   std::size_t interior_contacts = 0;
   std::size_t non_rattler_contacts = 0;
   for (std::size_t k = 0; k < disks.size(); ++k) {

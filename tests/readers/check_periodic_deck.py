@@ -5,9 +5,11 @@
 
 HELPER (frontpack_periodic_deck) writes a dense periodic packing (fill's closed form in the cell,
 bidisperse 1:1.4, certified exactly) and its deck: boundary p p p (xy) or
-p f p with wall planes (x). `lmp` (or `liggghts`) runs it, 1000 steps under gravity. At step 0 every atom is where
-the CSV puts it and feels its weight and nothing else (fx = 0, fy = -m g: no contact, across the
-seams included); at step 1000 no atom is lost; `frontpack check --periodic` certifies the dump's
+p f p with wall planes (x). `lmp` (or `liggghts`) runs it, 1000 steps, under gravity in the shear
+cell (x) and without in the torus (xy: no wall would hold the packing, which would fall as one).
+At step 0 every atom is where the CSV puts it and feels its weight and nothing else (fx = 0,
+fy = -m g; in the torus fx = fy = 0: no contact, across the seams included), and the script has
+gravity exactly in the shear cell; at step 1000 no atom is lost; `frontpack check --periodic` certifies the dump's
 first snapshot. Then the same with one disk moved across the seam into its neighbour's image by 1%
 of a radius: LAMMPS must see that contact at step 0 and the check must name the pair (exit 6), so
 the test can fail.
@@ -59,6 +61,9 @@ def main_yade(axes, helper, tool, work):
         out = [e for e in end if e[1] - e[2] < ymin - 0.05 * rmin or e[1] + e[2] > ymax + 0.05 * rmin]
         if out:
             fail("yade: %d spheres through the shear cell's walls, e.g. %r" % (len(out), out[:3]))
+    with open(os.path.join(deck, "run.py"), encoding="ascii") as f:
+        if ("gravity=(0, 0, 0)" in f.read()) != (axes == "xy"):
+            fail("yade: run.py should apply gravity in the shear cell only")
     check = [tool, "check", "--periodic", cell, "--periodic-axes", axes, "packing.txt"]
     run(check, deck)
     print("yade O.periodic (%s): %d spheres, no contact after the first step, none lost in 500 steps%s; "
@@ -89,15 +94,15 @@ def make(simulator, helper, axes, kind, work):
 
 
 def contacts_at_start(start, want, gravity):
-    """The atoms that feel more than their weight at step 0; fails if an atom is not where the CSV
-    puts it."""
+    """The atoms that feel more than their weight (gravity 0: any force) at step 0; fails if an
+    atom is not where the CSV puts it."""
     rel = 1e-12
     touched = []
     for a, (x, y, r, t) in zip(start, want):
         if int(a["type"]) != t or abs(a["x"] - x) > 1e-15 or abs(a["y"] - y) > 1e-15 or abs(a["radius"] - r) > rel * r:
             fail("atom %d is %r at step 0, frontpack wrote %r" % (int(a["id"]), a, (x, y, r, t)))
         weight = a["mass"] * gravity
-        if a["fx"] != 0 or abs(a["fy"] + weight) > rel * weight:
+        if a["fx"] != 0 or (a["fy"] != 0 if gravity == 0 else abs(a["fy"] + weight) > rel * weight):
             touched.append(int(a["id"]))
     return touched
 
@@ -115,7 +120,8 @@ def main():
     out, cell, _, want, frames = make(simulator, helper, axes, "clean", work)
     if sorted(frames) != list(range(0, STEPS + 1, STEPS // 10)):
         fail("dump timesteps %r, expected 0 to %d every %d" % (sorted(frames), STEPS, STEPS // 10))
-    touched = contacts_at_start(frames[0], want, 9.81)
+    gravity = 9.81 if axes == "x" else 0.0
+    touched = contacts_at_start(frames[0], want, gravity)
     if touched:
         fail("atoms %r feel a contact at step 0: an overlap LAMMPS sees" % touched[:10])
     for step, atoms in frames.items():
@@ -127,14 +133,17 @@ def main():
     boundary = "boundary p p p" if axes == "xy" else "boundary p f p"
     if boundary not in script:
         fail("in.frontpack has no %r" % boundary)
+    if ("fix gravity" in script) != (axes == "x"):
+        fail("in.frontpack %s gravity: expected it in the shear cell only" % ("has" if axes == "xy" else "lacks"))
     check = [tool, "check", "--periodic", cell, "--periodic-axes", axes, "free.lammpstrj", "--timestep", "0"]
     run(check, deck)
-    print("%s %s: %d atoms, step 0 contact-free (each feels only its weight), none lost in %d steps, "
-          "step 0 certified by frontpack check --periodic" % (simulator, boundary, len(want), STEPS))
+    print("%s %s: %d atoms, step 0 contact-free (each feels %s), none lost in %d steps, "
+          "step 0 certified by frontpack check --periodic"
+          % (simulator, boundary, len(want), "only its weight" if gravity else "no force", STEPS))
 
     out, cell, planted, want, frames = make(simulator, helper, axes, "overlap", work)
     i, j = (int(v) for v in planted.split())
-    touched = contacts_at_start(frames[0], want, 9.81)
+    touched = contacts_at_start(frames[0], want, gravity)
     if i + 1 not in touched or j + 1 not in touched:
         fail("the planted overlap across the seam (atoms %d and %d) is not seen by LAMMPS at step 0: %r"
              % (i + 1, j + 1, touched[:10]))
