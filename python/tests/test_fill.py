@@ -232,3 +232,27 @@ def test_targets_fraction_count_height():
     assert low.target["area_filled"] == 0.5
     with pytest.raises(frontpack.OptionError):
         frontpack.fill(square, "constant:0.02", count=300)  # the boundary method takes no count
+
+
+@pytest.mark.parametrize("method", ["boundary", "closed"])
+def test_periodic_cell_wraps_with_the_default_and_the_closed_form(method):
+    cell = frontpack.Domain.periodic((0, 0, 1.5, 1.5))
+    p = frontpack.fill(cell, "discrete:0.02:0.5,0.028:0.5", seed=3, method=method)
+    assert len(p) > 800 and p.certificate.culled == 0 and p.certificate.dropped == 0
+    report = frontpack.certify(cell, p.disks)
+    assert report.valid and report.overlapping.shape == (0, 2)
+    x, y, r = p.disks[:, 0], p.disks[:, 1], p.disks[:, 2]
+    assert ((x >= 0) & (x < 1.5) & (y >= 0) & (y < 1.5)).all()
+    assert ((x - r < 0) | (x + r > 1.5)).sum() > 10  # disks cross the sides
+    # independent check through the nearest image, in floating point: no pair overlaps
+    d = p.disks[:, None, :2] - p.disks[None, :, :2]
+    d -= 1.5 * np.round(d / 1.5)
+    gap = np.hypot(d[..., 0], d[..., 1]) - (r[:, None] + r[None, :])
+    np.fill_diagonal(gap, 1)
+    assert gap.min() > -1e-12
+    assert np.pi * (r * r).sum() / 1.5**2 > 0.79
+
+
+def test_open_form_refuses_a_periodic_cell():
+    with pytest.raises(frontpack.OptionError, match="the open form does not wrap around a cell"):
+        frontpack.fill(frontpack.Domain.periodic((0, 0, 1, 1)), "uniform:0.01,0.05", method="open")
