@@ -22,7 +22,10 @@
 //   radii                         2 + 1 + 1 + 1 bytes: rmax / extent, its power of 2, rmax / rmin, constant?
 //   repeat                        1 byte: % 8 == 0: fill twice and compare; bit 3 set: fill_voids = false
 //   extension (optional)          whatever follows: a first byte % 8 < 6 picks a shaped domain (shaped())
-//                                 that replaces the star rings; 6 or 7 keeps them (nothing more is read)
+//                                 that replaces the star rings; 6 keeps them (nothing more is read); 7
+//                                 keeps them and reads one more byte p: p % 4 == 1 fills the rings' box
+//                                 as a periodic cell in x and y instead, p % 4 == 2 as a shear cell
+//                                 (periodic in x, walls at the bottom and top)
 //
 // Why this encoding: the inputs made before the boundary method and fill_voids (the 32 corpus
 // seeds and the 2 regressions committed before) must keep their meaning, and that layout read
@@ -51,7 +54,11 @@ namespace {
 class Bytes {
  public:
   Bytes(const std::uint8_t* data, std::size_t size) : data_(data), size_(size) {}
-  std::uint8_t byte() { return pos_ < size_ ? data_[pos_++] : 0; }
+  std::uint8_t byte() {
+    const std::uint8_t b = pos_ < size_ ? data_[pos_] : 0;
+    ++pos_;
+    return b;
+  }
   std::uint16_t u16() {
     const std::uint8_t lo = byte();  // sequenced: the first byte is the low one, with every compiler
     const std::uint8_t hi = byte();
@@ -71,6 +78,8 @@ class Bytes {
   /// byte % n.
   int in_range(int n) { return static_cast<int>(byte() % static_cast<unsigned>(n)); }
   [[nodiscard]] bool empty() const { return pos_ >= size_; }
+  /// How many bytes have been read (past the end too): where the next field starts.
+  [[nodiscard]] std::size_t pos() const { return pos_; }
 
  private:
   const std::uint8_t* data_;
@@ -482,6 +491,7 @@ void fill(const std::uint8_t* data, std::size_t size) {
     polygons.push_back(std::move(poly));
   }
   // The options' bytes, all read before the extension (rmax: mantissa, then exponent, as Clang read them).
+  const std::size_t method_at = in.pos();
   const std::uint8_t method = in.byte();
   const std::uint64_t seed = in.u64();
   const std::uint8_t window = in.byte();
@@ -490,16 +500,24 @@ void fill(const std::uint8_t* data, std::size_t size) {
   const int ratio_exponent = static_cast<int>(in.byte() % 11);
   const bool constant = (in.byte() & 1) != 0;
   const std::uint8_t repeat = in.byte();
+  Periodicity periodicity = Periodicity::none;
+  const std::size_t extension_at = in.pos();
   if (!in.empty()) {
     const int kind = in.in_range(8);  // 6, 7: keep the star rings
     if (kind < 6) {
       polygons = shaped(in, kind, scale, offset, parts);
+    } else if (kind == 7) {
+      const int p = in.in_range(4);
+      periodicity = p == 1 ? Periodicity::xy : p == 2 ? Periodicity::x : Periodicity::none;
     }
   }
 
   std::optional<Domain> domain;
   try {
     domain = Domain::from_polygons(std::move(polygons));
+    if (periodicity != Periodicity::none) {
+      domain = Domain::periodic(domain->bbox(), periodicity);
+    }
   } catch (const Error& e) {
     refused(e);
     return;
@@ -516,7 +534,11 @@ void fill(const std::uint8_t* data, std::size_t size) {
     // rmax from the domain's size down to 2^-10 of it; rmax / rmin up to 1024.
     const Box b = domain->bbox();
     const double extent = std::max(b.width(), b.height());
-    const double rmax = extent * std::ldexp(1.0 + rmax_mantissa, -rmax_exponent);
+    double rmax = extent * std::ldexp(1.0 + rmax_mantissa, -rmax_exponent);
+    if (periodicity != Periodicity::none) {
+      // At most a tenth of the periods, which fill() requires (and a disk no larger than the cell).
+      rmax = std::min({rmax, b.width() / 10, periodicity == Periodicity::xy ? b.height() / 10 : b.height() / 2});
+    }
     const double rmin = rmax * std::ldexp(1.0, -ratio_exponent);
     options.radii = constant ? Radii::constant(rmax) : Radii::uniform(rmin, rmax);
   } catch (const Error& e) {
@@ -526,10 +548,11 @@ void fill(const std::uint8_t* data, std::size_t size) {
   if (verbose()) {  // to reproduce a finding by hand
     const RadiusDistribution& r = options.radii.distribution();
     std::fprintf(stderr,
-                 "domain %s\nmethod %s seed %llu window %zu fill_voids %d max_disks %zu radii %s [%.17g, %.17g]\n",
-                 domain->to_wkt().c_str(), to_string(options.method), static_cast<unsigned long long>(options.seed),
-                 options.window, options.fill_voids ? 1 : 0, options.max_disks, constant ? "constant" : "uniform",
-                 r.min(), r.max());
+                 "domain %s (%s)\nmethod %s seed %llu window %zu fill_voids %d max_disks %zu radii %s [%.17g, %.17g]\n"
+                 "bytes: method at %zu, extension at %zu\n",
+                 domain->to_wkt().c_str(), to_string(domain->periodicity()), to_string(options.method),
+                 static_cast<unsigned long long>(options.seed), options.window, options.fill_voids ? 1 : 0,
+                 options.max_disks, constant ? "constant" : "uniform", r.min(), r.max(), method_at, extension_at);
   }
   Packing packing;
   try {

@@ -171,11 +171,7 @@ class BoundaryFront {
     }
     elements_.release_links();
     obstacles_.release();
-    const std::size_t first_out = out_.size();
-    elements_.move_out(frame_.origin, frame_.unit.inv_k, out_);
-    if (wrap().any()) {
-      keep_in_cell(wrap(), std::span<Disk>(out_).subspan(first_out), cell_);
-    }
+    elements_.move_out(frame_.origin, frame_.unit.inv_k, out_, cell_);
     result.fixed_bytes = fixed_bytes_;
     return result;
   }
@@ -240,14 +236,9 @@ class BoundaryFront {
     const auto id = static_cast<std::int32_t>(elements_.size());
     const std::int32_t n = elements_.add_disk(x, y, r, obstacles_.enter(id, x, y));
     if (wrap().any()) {
-      std::array<std::array<double, 2>, 3> shifts{};
-      const std::size_t k = wrap().image_shifts(x, y, kImageReach * frame_.rmax + 2 * frame_.clearance, shifts);
-      for (std::size_t i = 0; i < k; ++i) {
-        const double ix = x + shifts[i][0];
-        const double iy = y + shifts[i][1];
-        const auto image = static_cast<std::int32_t>(elements_.size());
-        elements_.add_image(n, ix, iy, obstacles_.enter(image, ix, iy));
-      }
+      elements_.add_images(
+          n, kImageReach * frame_.rmax + 2 * frame_.clearance,
+          [this](std::int32_t image, double ix, double iy) { return obstacles_.enter(image, ix, iy); });
     }
     return n;
   }
@@ -297,10 +288,18 @@ class BoundaryFront {
       return false;
     }
     ++seeds_;
-    if (seeds_ == 1 && wrap().any() && !wrap().y) {
-      return seed_walls(r);
-    }
     const double r2 = draw();
+    // In a periodic cell, the pair (side by side in x) must clear its own images: a cell narrower
+    // than that, or a clearance near its size (coordinates whose ulps near the cell's size), gets no
+    // seed. (fill() requires 10 rmax; the fill fuzzer found such a cell far from the origin.)
+    const double c = frame_.clearance;
+    if ((wrap().x && !(2 * (r + r2 + c) <= frame_.width)) ||
+        (wrap().y && !(2 * std::max(r, r2) + c <= frame_.height))) {
+      return false;
+    }
+    if (seeds_ == 1 && wrap().x && !wrap().y) {
+      return seed_walls(r, r2);
+    }
     // A torus's first pair lies at the cell's centre (nothing else is there yet), so that the front
     // meets itself along the sides x = 0 and y = 0, as the closed form's does (Sec. 2.1).
     const std::optional<Point> at =
@@ -320,8 +319,7 @@ class BoundaryFront {
 
   // A shear cell's first disks (seed_on_walls()), each with a gap before and after it along its
   // wall: the first layer grows along each wall both ways, around the cell.
-  bool seed_walls(double r) {
-    const double r2 = draw();
+  bool seed_walls(double r, double r2) {
     const std::array<std::optional<Point>, 2> at = seed_on_walls(frame_, rng_, r, r2);
     for (std::size_t k = 0; k < 2; ++k) {
       if (at[k]) {

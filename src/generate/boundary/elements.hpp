@@ -4,8 +4,10 @@
 // and CGAL-free: every try at a gap asks.
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
+#include <span>
 #include <utility>
 #include <vector>
 
@@ -119,14 +121,22 @@ class Elements {
     return e >= 0 && wrap_.any() ? real_[static_cast<std::size_t>(e)] : e;
   }
 
-  /// An image of disk `of` at (x, y), cell_next the next node in its grid cell; its id.
-  std::int32_t add_image(std::int32_t of, double x, double y, std::int32_t cell_next) {
-    const auto id = static_cast<std::int32_t>(nodes_.size());
-    nodes_.push_back(BoundaryNode{x, y, node(of).r, cell_next, kNoElement});
-    before_.push_back(kNoElement);
-    real_.push_back(of);
-    ++images_;
-    return id;
+  /// The images of disk n within `reach` of the cell, each entered in the grid by
+  /// enter(id, x, y), which returns the node that headed its cell.
+  template <class Enter>
+  void add_images(std::int32_t n, double reach, Enter&& enter) {
+    const BoundaryNode o = node(n);
+    std::array<std::array<double, 2>, 3> shifts{};
+    const std::size_t k = wrap_.image_shifts(o.x, o.y, reach, shifts);
+    for (std::size_t i = 0; i < k; ++i) {
+      const double x = o.x + shifts[i][0];
+      const double y = o.y + shifts[i][1];
+      const auto id = static_cast<std::int32_t>(nodes_.size());
+      nodes_.push_back(BoundaryNode{x, y, o.r, enter(id, x, y), kNoElement});
+      before_.push_back(kNoElement);
+      real_.push_back(n);
+      ++images_;
+    }
   }
   /// How many images there are.
   [[nodiscard]] std::size_t images() const noexcept { return images_; }
@@ -201,8 +211,9 @@ class Elements {
   void release_links() { release(before_); }
 
   /// Appends the disks, scaled back to the domain's coordinates, to `out`, and frees the nodes
-  /// (the images are dropped first).
-  void move_out(Point origin, double inv_k, std::vector<Disk>& out) {
+  /// (the images are dropped first; a periodic cell's centres are kept in `cell`, keep_in_cell()).
+  void move_out(Point origin, double inv_k, std::vector<Disk>& out, const Box& cell) {
+    const std::size_t first_out = out.size();
     if (images_ != 0) {
       std::size_t kept = 0;
       for (std::size_t i = 0; i < nodes_.size(); ++i) {
@@ -214,6 +225,9 @@ class Elements {
       release(real_);
     }
     detail::move_out(nodes_, corners_.size(), origin, inv_k, out);
+    if (wrap_.any()) {
+      keep_in_cell(wrap_, std::span<Disk>(out).subspan(first_out), cell);
+    }
   }
 
  private:
