@@ -420,7 +420,12 @@ class Front {
         u = walk_.first_overlap(front_.prev(c), false, n, j, 0, angles, hits);
       }
       if (j == kNone && u == kNone && wrap_.any() && splices < 2) {
-        if (const std::int32_t d = far_front_disk(cand, c, n); d != kNone) {
+        const std::int32_t d = far_front_disk(cand, c, n);
+        // (Not onto a retired segment k -> d: k -> n would be live again, and two segments could
+        // hand each other back and forth for ever, each splice undoing the other's retirement; the
+        // fill fuzzer found such a cell. So a splice never adds a live segment, and every
+        // placement that does not place a disk retires one.)
+        if (d != kNone && front_.segment_active(front_.prev(d))) {
           // A periodic front meets itself, or another of its cycles, across free space: the
           // segments c -> n and k -> d (k before d) become c -> d, retried, and k -> n, the entry of
           // the cycle that a split leaves apart (FrontList::splice()).
