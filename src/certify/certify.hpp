@@ -13,7 +13,8 @@
 namespace frontpack::detail {
 
 /// Certifies a fill's raw output in place: culls the disks not inside their own polygon
-/// (contains_in_own_polygon(), `part_end` as there), then drops one disk of every overlapping pair
+/// (contains_in_own_polygon(), `part_end` as there; empty: inside the domain, for disks that
+/// can have left no polygon for another, as the jam stage's), then drops one disk of every overlapping pair
 /// (drop_one_of_each_pair(); frontpack's generators never make one). Returns the certificate and
 /// records the two passes' wall times in stats.seconds_cull and stats.seconds_overlap. Throws
 /// CancelledError once `stop` is requested.

@@ -18,7 +18,7 @@ void contains(const Domain& domain, std::span<const Disk> disks, std::span<std::
 
 void contains_in_own_polygon(const Domain& domain, std::span<const Disk> disks, std::span<const std::size_t> part_end,
                              std::span<std::uint8_t> inside, const std::stop_token& stop) {
-  if (domain.num_polygons() == 1) {
+  if (domain.num_polygons() == 1 || part_end.empty()) {
     contains(domain, disks, inside, stop);
     return;
   }

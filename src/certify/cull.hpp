@@ -23,7 +23,9 @@ void contains(const Domain& domain, std::span<const Disk> disks, std::span<std::
 /// domain: the boxes of two polygons can overlap, and a disk of one polygon's fill inside the other
 /// would overlap that polygon's own disks. (A disk inside the domain lies in exactly one polygon:
 /// polygons meet at most at points, and a disk minus a point is connected.) With one polygon this
-/// is contains() against the domain itself. Precondition: part_end.back() == disks.size().
+/// is contains() against the domain itself, and so it is with an empty part_end: for disks that
+/// stayed in their polygons by construction (the jam stage moves certified disks, none across a
+/// wall). Precondition: part_end empty or part_end.back() == disks.size().
 void contains_in_own_polygon(const Domain& domain, std::span<const Disk> disks, std::span<const std::size_t> part_end,
                              std::span<std::uint8_t> inside, const std::stop_token& stop);
 

@@ -19,6 +19,13 @@ void check_targets(const Domain& domain, const FillOptions& o) {
     throw OptionError("fraction " + format_double(*o.fraction) +
                       ": a packing fraction (disk area / domain area) must lie strictly between 0 and 1");
   }
+  if (o.jam && (o.fraction || o.count != 0)) {
+    throw OptionError(o.fraction
+                          ? "jam makes the packing as dense as it gets; a target fraction leaves gaps: give one or "
+                            "the other"
+                          : "jam inserts disks until the packing jams; a count stops at a number of disks: give "
+                            "one or the other");
+  }
   if (o.fraction && o.count > 0) {
     throw OptionError("a target fraction and a count together over-determine the fill: give one of them");
   }

@@ -1,0 +1,27 @@
+// The jam stage (FillOptions::jam): after the front and its certification, the packing is made
+// denser, toward the jammed packing of the same radii, by inserting disks and relaxing the
+// overlaps away (relaxation.hpp), round by round. docs/jam.md.
+#pragma once
+
+#include <cstddef>
+#include <stop_token>
+#include <vector>
+
+#include "common/rng.hpp"
+#include "frontpack/domain.hpp"
+#include "frontpack/fill.hpp"
+#include "frontpack/sizes.hpp"
+
+namespace frontpack::detail {
+
+/// Jams `disks` (pairwise apart and inside `domain`) in place: each round draws radii from
+/// `radii`, inserts disks of them at random points of the domain, and relaxes every overlap away;
+/// a round that cannot be relaxed within its steps is undone and the next inserts half as many.
+/// Ends when a round of a few per ten thousand disks fails. The disks stay in their polygons (none
+/// crosses a wall), the drawn radii are kept, and the result goes to the certifier. `clearance`:
+/// the generators' (the relaxation keeps 4 of them between disks). Deterministic for `rng`'s
+/// state. Records rounds, insertions, steps and time in stats.
+void jam(const Domain& domain, const RadiusDistribution& radii, double clearance, Rng& rng, std::vector<Disk>& disks,
+         const std::stop_token& stop, FillStats& stats);
+
+}  // namespace frontpack::detail

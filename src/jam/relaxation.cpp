@@ -1,0 +1,289 @@
+#include "jam/relaxation.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "common/grid_cells.hpp"
+#include "common/stop.hpp"
+
+namespace frontpack::detail {
+
+namespace {
+
+// FIRE's constants as Bitzek et al. give them (Table I): steps of power before dt grows, its growth
+// and cut, the mixing and its decay. The time step is in units where every disk has unit mass and
+// every contact unit stiffness (U = 1/2 delta^2, delta a length): a contact's period is 2 pi, a
+// disk pressed by six neighbours has one of about 2.6, and 0.5 keeps the integration stable;
+// lengths need no scale, so the relaxation behaves the same at any size.
+constexpr std::size_t kPowerSteps = 5;
+constexpr double kGrow = 1.1;
+constexpr double kCut = 0.5;
+constexpr double kMix = 0.1;
+constexpr double kMixDecay = 0.99;
+constexpr double kStep0 = 0.1;
+constexpr double kStepMax = 0.5;
+// The relaxation gives up when the largest overlap left has not fallen to kStall of what it was a
+// window of steps before.
+constexpr std::size_t kWindow = 1000;
+constexpr double kStall = 0.35;
+
+// The cell `offset` (-1, 0 or 1) from cell c of an axis of n cells, wrapped on a periodic axis;
+// false where the grid ends.
+bool neighbour(std::size_t c, int offset, std::size_t n, bool wrap, std::size_t& out) noexcept {
+  if (offset < 0 && c == 0) {
+    out = n - 1;
+    return wrap;
+  }
+  if (offset > 0 && c + 1 == n) {
+    out = 0;
+    return wrap;
+  }
+  out = offset < 0 ? c - 1 : offset > 0 ? c + 1 : c;
+  return true;
+}
+
+}  // namespace
+
+Relaxation::Relaxation(const RelaxationFrame& frame) : frame_(frame) {
+  // The skin: a pair is listed when it lies within its separation plus the skin, so the lists
+  // hold until some disk has moved half the skin. A step moves a disk at most a tenth of rmin.
+  skin_ = 0.5 * frame_.rmin;
+}
+
+double Relaxation::gap(double r1, double r2) const noexcept {
+  return std::max(kRelativeGap * (r1 + r2), frame_.least_gap);
+}
+
+void Relaxation::wrap_difference(double& dx, double& dy) const noexcept {
+  if (frame_.periodicity == Periodicity::none) {
+    return;
+  }
+  const double lx = frame_.cell.xmax - frame_.cell.xmin;
+  dx -= lx * std::nearbyint(dx / lx);
+  if (frame_.periodicity == Periodicity::xy) {
+    const double ly = frame_.cell.ymax - frame_.cell.ymin;
+    dy -= ly * std::nearbyint(dy / ly);
+  }
+}
+
+void Relaxation::build_lists(const std::vector<Disk>& disks) {
+  const Box& b = frame_.cell;
+  const double reach = 2 * frame_.rmax + gap(frame_.rmax, frame_.rmax) + skin_;
+  const bool wrap_x = frame_.periodicity != Periodicity::none;
+  const bool wrap_y = frame_.periodicity == Periodicity::xy;
+  const double margin_x = wrap_x ? 0 : reach;
+  const double margin_y = wrap_y ? 0 : reach;
+  const double x0 = b.xmin - margin_x;
+  const double y0 = b.ymin - margin_y;
+  const double w = b.xmax - b.xmin + 2 * margin_x;
+  const double h = b.ymax - b.ymin + 2 * margin_y;
+  // On a periodic axis the cells tile the period exactly (at least 3 of them: the cell is at
+  // least 10 rmax across), so that the neighbours of a cell wrap onto whole cells.
+  const std::size_t nx =
+      wrap_x ? std::max<std::size_t>(3, static_cast<std::size_t>(w / reach)) : axis_cells(w / reach, kMaxAxisCells);
+  const std::size_t ny =
+      wrap_y ? std::max<std::size_t>(3, static_cast<std::size_t>(h / reach)) : axis_cells(h / reach, kMaxAxisCells);
+  const double inv_x = static_cast<double>(nx) / w;
+  const double inv_y = static_cast<double>(ny) / h;
+  const auto cell_of = [&](const Disk& d) {
+    return cell_index(d.centre.y, y0, inv_y, ny) * nx + cell_index(d.centre.x, x0, inv_x, nx);
+  };
+  // Counting sort of the disks into their cells.
+  cell_start_.assign(nx * ny + 1, 0);
+  for (const Disk& d : disks) {
+    ++cell_start_[cell_of(d) + 1];
+  }
+  for (std::size_t c = 0; c < nx * ny; ++c) {
+    cell_start_[c + 1] += cell_start_[c];
+  }
+  cell_items_.resize(disks.size());
+  cell_fill_.assign(cell_start_.begin(), cell_start_.end() - 1);
+  for (std::uint32_t i = 0; i < disks.size(); ++i) {
+    cell_items_[cell_fill_[cell_of(disks[i])]++] = i;
+  }
+  pairs_.clear();
+  for (std::size_t cy = 0; cy < ny; ++cy) {
+    for (std::size_t cx = 0; cx < nx; ++cx) {
+      for (std::uint32_t a = cell_start_[cy * nx + cx]; a < cell_start_[cy * nx + cx + 1]; ++a) {
+        const std::uint32_t i = cell_items_[a];
+        const Disk& di = disks[i];
+        for (int oy = -1; oy <= 1; ++oy) {
+          std::size_t ky = 0;
+          if (!neighbour(cy, oy, ny, wrap_y, ky)) {
+            continue;
+          }
+          for (int ox = -1; ox <= 1; ++ox) {
+            std::size_t kx = 0;
+            if (!neighbour(cx, ox, nx, wrap_x, kx)) {
+              continue;
+            }
+            const std::size_t k = ky * nx + kx;
+            for (std::uint32_t e = cell_start_[k]; e < cell_start_[k + 1]; ++e) {
+              const std::uint32_t j = cell_items_[e];
+              if (j <= i) {
+                continue;
+              }
+              double dx = disks[j].centre.x - di.centre.x;
+              double dy = disks[j].centre.y - di.centre.y;
+              wrap_difference(dx, dy);
+              const double s = di.radius + disks[j].radius + gap(di.radius, disks[j].radius) + skin_;
+              if (dx * dx + dy * dy < s * s) {
+                pairs_.push_back({i, j});
+              }
+            }
+          }
+        }
+      }
+    }
+  }
+  near_wall_.clear();
+  if (frame_.walls != nullptr && frame_.walls->has_walls()) {
+    for (std::uint32_t i = 0; i < disks.size(); ++i) {
+      const Disk& d = disks[i];
+      if (frame_.walls->closer_than(d.centre, d.radius + gap(d.radius, d.radius) + skin_)) {
+        near_wall_.push_back(i);
+      }
+    }
+  }
+  built_at_.resize(disks.size());
+  for (std::size_t i = 0; i < disks.size(); ++i) {
+    built_at_[i] = disks[i].centre;
+  }
+}
+
+double Relaxation::forces(const std::vector<Disk>& disks) {
+  std::fill(force_.begin(), force_.end(), Point{0, 0});
+  double worst = -std::numeric_limits<double>::infinity();
+  for (const Pair& p : pairs_) {
+    const Disk& a = disks[p.i];
+    const Disk& b = disks[p.j];
+    double dx = b.centre.x - a.centre.x;
+    double dy = b.centre.y - a.centre.y;
+    wrap_difference(dx, dy);
+    const double g = gap(a.radius, b.radius);
+    const double s = a.radius + b.radius + g;
+    const double d2 = dx * dx + dy * dy;
+    if (d2 >= s * s) {
+      continue;
+    }
+    const double d = std::sqrt(d2);
+    const double delta = s - d;
+    worst = std::max(worst, delta - g / 2);
+    // Two centres at the same point (two disks inserted there) part along x.
+    const double ux = d > 0 ? dx / d : 1;
+    const double uy = d > 0 ? dy / d : 0;
+    force_[p.j].x += delta * ux;
+    force_[p.j].y += delta * uy;
+    force_[p.i].x -= delta * ux;
+    force_[p.i].y -= delta * uy;
+  }
+  for (const std::uint32_t i : near_wall_) {
+    const Disk& a = disks[i];
+    const double g = gap(a.radius, a.radius);
+    frame_.walls->near(a.centre, a.radius + g, [&](Point q, double dist) {
+      const double delta = a.radius + g - dist;
+      if (delta <= 0 || dist <= 0) {
+        return;
+      }
+      worst = std::max(worst, delta - g / 2);
+      force_[i].x += delta * (a.centre.x - q.x) / dist;
+      force_[i].y += delta * (a.centre.y - q.y) / dist;
+    });
+  }
+  return worst;
+}
+
+bool Relaxation::run(std::vector<Disk>& disks, std::size_t max_iterations, const std::stop_token& stop) {
+  const std::size_t n = disks.size();
+  force_.assign(n, Point{0, 0});
+  velocity_.assign(n, Point{0, 0});
+  build_lists(disks);
+  double dt = kStep0;
+  double mix = kMix;
+  std::size_t power_steps = 0;
+  const double max_step = 0.1 * frame_.rmin;
+  const double rebuild2 = 0.25 * skin_ * skin_;
+  const Box& cell = frame_.cell;
+  double last_window = 0;
+  for (iterations_ = 0; iterations_ < max_iterations; ++iterations_) {
+    throw_if_stopped(stop);
+    const double w = forces(disks);
+    if (w <= 0) {
+      return true;
+    }
+    if (iterations_ % kWindow == 0) {
+      // A round the packing can take sheds its overlaps geometrically, by 5-50 times per window
+      // near jamming; one it cannot take stalls at overlaps of about 1e-3 rmax, each window
+      // shaving off less than half (docs/jam.md).
+      if (iterations_ >= 2 * kWindow && w > kStall * last_window) {
+        return false;
+      }
+      last_window = w;
+    }
+    double power = 0;
+    double vv = 0;
+    double ff = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+      power += force_[i].x * velocity_[i].x + force_[i].y * velocity_[i].y;
+      vv += velocity_[i].x * velocity_[i].x + velocity_[i].y * velocity_[i].y;
+      ff += force_[i].x * force_[i].x + force_[i].y * force_[i].y;
+    }
+    if (power > 0) {
+      const double scale = ff > 0 ? mix * std::sqrt(vv / ff) : 0;
+      for (std::size_t i = 0; i < n; ++i) {
+        velocity_[i].x = (1 - mix) * velocity_[i].x + scale * force_[i].x;
+        velocity_[i].y = (1 - mix) * velocity_[i].y + scale * force_[i].y;
+      }
+      if (++power_steps > kPowerSteps) {
+        dt = std::min(dt * kGrow, kStepMax);
+        mix *= kMixDecay;
+      }
+    } else {
+      std::fill(velocity_.begin(), velocity_.end(), Point{0, 0});
+      dt *= kCut;
+      mix = kMix;
+      power_steps = 0;
+    }
+    bool rebuild = false;
+    for (std::size_t i = 0; i < n; ++i) {
+      Point& v = velocity_[i];
+      v.x += dt * force_[i].x;
+      v.y += dt * force_[i].y;
+      double sx = dt * v.x;
+      double sy = dt * v.y;
+      const double step2 = sx * sx + sy * sy;
+      if (step2 > max_step * max_step) {
+        // No disk jumps through a neighbour or a wall in one step.
+        const double k = max_step / std::sqrt(step2);
+        v.x *= k;
+        v.y *= k;
+        sx *= k;
+        sy *= k;
+      }
+      Point& c = disks[i].centre;
+      c.x += sx;
+      c.y += sy;
+      if (frame_.periodicity != Periodicity::none) {
+        const double lx = cell.xmax - cell.xmin;
+        c.x = c.x < cell.xmin ? c.x + lx : c.x >= cell.xmax ? c.x - lx : c.x;
+        c.x = c.x >= cell.xmax ? cell.xmin : c.x;
+        if (frame_.periodicity == Periodicity::xy) {
+          const double ly = cell.ymax - cell.ymin;
+          c.y = c.y < cell.ymin ? c.y + ly : c.y >= cell.ymax ? c.y - ly : c.y;
+          c.y = c.y >= cell.ymax ? cell.ymin : c.y;
+        }
+      }
+      double mx = c.x - built_at_[i].x;
+      double my = c.y - built_at_[i].y;
+      wrap_difference(mx, my);
+      rebuild = rebuild || mx * mx + my * my > rebuild2;
+    }
+    if (rebuild) {
+      build_lists(disks);
+    }
+  }
+  return forces(disks) <= 0;
+}
+
+}  // namespace frontpack::detail
