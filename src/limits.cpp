@@ -99,6 +99,18 @@ std::function<bool(std::size_t, double)> ProgressMeter::tick() const {
   };
 }
 
+std::function<bool(std::size_t, double)> ProgressMeter::jam_tick() const {
+  if (!progress_ && !stop_.stop_possible()) {
+    return {};
+  }
+  return [this](std::size_t disks, double fraction) {
+    if (stop_.stop_requested()) {
+      return false;
+    }
+    return !progress_ || progress_(Progress{disks, fraction, covered_before_, Phase::jam});
+  };
+}
+
 void ProgressMeter::polygon_done(std::span<const Disk> disks) {
   for (const Disk& d : disks) {
     covered_before_ += std::numbers::pi * d.radius * d.radius;

@@ -39,6 +39,11 @@ class ProgressMeter {
   /// The disks a polygon's run appended, once it has returned.
   void polygon_done(std::span<const Disk> disks);
 
+  /// The jam stage's tick (jam/jam.hpp): reports Phase::jam with the disks and the fraction of
+  /// the rounds done; false once `stop` is requested or the callback cancels. Empty if there is
+  /// no callback and no stop is possible.
+  [[nodiscard]] std::function<bool(std::size_t, double)> jam_tick() const;
+
   /// Reports the front's end (fraction 1, `generated` disks) and the certification's start.
   void generated(std::size_t generated) const;
   /// Reports the certification's end.

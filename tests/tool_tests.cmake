@@ -468,3 +468,15 @@ frontpack_tool_test(fill_periodic_narrow 5 "a periodic cell must be at least 10 
   fill --periodic 0.4,2 --radius uniform:0.01,0.05)
 frontpack_tool_test(fill_periodic_and_domain 1 "excludes"
   fill ${S}/unit_square.wkt --periodic 2,2)
+
+# fill --jam: the jam stage's line in the summary and its JSON, certified; refused with a target
+# fraction, with the library's message.
+frontpack_tool_check(fill_jam 0
+  "certified: [0-9]+ generated, 0 culled .*, 0 dropped.*jam: +[1-9][0-9]* disks inserted in [0-9]+ rounds, [0-9]+ relaxation steps"
+  FILES ${TOOL_OUT}/fill_jam/j.csv ${TOOL_OUT}/fill_jam/j.json
+  JSON ${TOOL_OUT}/fill_jam/j.json "jam/inserted=^[1-9][0-9]*$" "jam/rounds=^[1-9][0-9]*$" "seconds/jam=^[0-9]"
+       "certificate/dropped=^0$"
+  ARGS fill --wkt "POLYGON((0 0,1 0,1 1,0 1,0 0))" --radius discrete:0.014:0.5,0.0196:0.5 --seed 1 --jam
+       -o ${TOOL_OUT}/fill_jam/j.csv --json ${TOOL_OUT}/fill_jam/j.json)
+frontpack_tool_test(fill_jam_fraction 5 "jam makes the packing as dense as it gets; a target fraction leaves gaps"
+  fill ${S}/unit_square.wkt --jam --fraction 0.6)

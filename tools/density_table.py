@@ -30,6 +30,8 @@ import time
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 METHODS = ("closed", "open", "boundary")
+# The boundary method followed by the jam stage (fill --jam, docs/jam.md): --methods boundary+jam.
+JAM_METHOD = "boundary+jam"
 SEEDS = (1, 2, 3)
 RATIO = 10  # rmax / rmin
 # The pictures: one concave domain with holes, a few thousand disks so that they are visible.
@@ -151,8 +153,9 @@ def fmt_num(x):
 def fill(tool, shape_path, method, spec, seed, workdir, extra=()):
     js = os.path.join(workdir, "summary.json")
     csv = os.path.join(workdir, "disks.csv")
-    run([tool, "fill", shape_path, "--method", method, "--radius", spec, "--seed", str(seed),
-         "--json", js, "-q", "-o", csv] + list(extra))
+    jam = ["--jam"] if method.endswith("+jam") else []
+    run([tool, "fill", shape_path, "--method", method.removesuffix("+jam"), "--radius", spec, "--seed", str(seed),
+         "--json", js, "-q", "-o", csv] + jam + list(extra))
     with open(js) as f:
         return json.load(f), csv
 
@@ -246,11 +249,12 @@ def quality_run(tool, shape_path, method, spec, seed, workdir):
         "lec": j["largest_empty_circle"]["radius_upper"] / rmax, "holes": 100.0 * median_holes / disks,
         "profile": worst, "cell_p1": j["cell_coverage"]["p1"], "rattlers": j["rattlers"] / disks,
         "seg": j["segregation_ks_by_area"], "ks": j["radius"]["ks_by_area"],
-        "us_per_disk": 1e6 * j["seconds"]["front"] / disks, "culled": j["certificate"]["culled"],
+        "us_per_disk": 1e6 * (j["seconds"]["front"] + j["seconds"].get("jam", 0)) / disks,
+        "culled": j["certificate"]["culled"],
     }
 
 
-def quality_table(tool, shapes, disks, methods, jobs, log):
+def quality_table(tool, shapes, disks, methods, jobs, log, labels=None, seeds=SEEDS):
     import concurrent.futures
     lines = [
         "| shape | radii | method | disks | interior | band | largest empty circle / rmax (max) | holes taking a median disk, % of disks | profile 1-6 rmax, worst - interior | cell coverage, 1st percentile | rattlers | segregation KS | KS by area | culled | front µs/disk |",
@@ -261,10 +265,10 @@ def quality_table(tool, shapes, disks, methods, jobs, log):
         work = []
         for shape in shapes:
             path = os.path.join(ROOT, "shapes", shape)
-            specs_of[shape] = size_specs(shape_area(tool, path), disks)
+            specs_of[shape] = [(l, s) for l, s in size_specs(shape_area(tool, path), disks) if not labels or l in labels]
             for label, spec in specs_of[shape]:
                 for method in methods:
-                    for seed in SEEDS:
+                    for seed in seeds:
                         work.append((shape, label, method, seed, path, spec))
         with concurrent.futures.ThreadPoolExecutor(max_workers=jobs) as ex:
             runs = list(ex.map(lambda w: quality_run(tool, w[4], w[2], w[5], w[3], workdir), work))
@@ -351,8 +355,10 @@ def main():
     ap.add_argument("--out", help="write the table to this file (default: stdout)")
     ap.add_argument("--disks", type=int, default=40000, help="about this many disks per run (default 40000)")
     ap.add_argument("--shapes", nargs="*", help="these shapes (file names in shapes/) instead of every concave one")
-    ap.add_argument("--methods", nargs="*", choices=METHODS, default=list(METHODS),
-                    help="these methods only (default: all three)")
+    ap.add_argument("--methods", nargs="*", choices=METHODS + (JAM_METHOD,), default=list(METHODS),
+                    help="these methods only (default: the three without the jam stage)")
+    ap.add_argument("--specs", nargs="*", help="--sizes: these radius labels only (e.g. 'bidisperse 1:1.4')")
+    ap.add_argument("--seeds", nargs="*", type=int, default=list(SEEDS), help="seeds (default 1 2 3)")
     ap.add_argument("--pictures", action="store_true",
                     help="write docs/img/density-{closed,open,boundary}.png (%s, %s, seed %d, %d px) and no table"
                     % (PICTURE_SHAPE, PICTURE_RADIUS, PICTURE_SEED, PICTURE_WIDTH))
@@ -384,7 +390,8 @@ def main():
 
     t0 = time.monotonic()
     if args.sizes:
-        text = quality_table(tool, args.shapes or list(QUALITY_SHAPES), args.disks, args.methods, args.jobs, log)
+        text = quality_table(tool, args.shapes or list(QUALITY_SHAPES), args.disks, args.methods, args.jobs, log,
+                             args.specs, tuple(args.seeds))
     else:
         text = table(tool, args.shapes or concave_shapes(), args.disks, args.methods, log)
     log("total %.0f s" % (time.monotonic() - t0))

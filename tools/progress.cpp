@@ -56,6 +56,18 @@ void ProgressLine::update(const frontpack::Progress& p) {
   if (mode_ == Mode::off) {
     return;
   }
+  if (p.phase == frontpack::Phase::jam) {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    const double t = seconds(start_);
+    if (t - last_ < (mode_ == Mode::terminal ? kTerminalEvery : kLogEvery)) {
+      return;
+    }
+    last_ = t;
+    char text[160];
+    std::snprintf(text, sizeof text, "jamming: %zu disks, about %.0f%% of the rounds", p.disks, 100 * p.fraction);
+    draw(text);
+    return;
+  }
   if (p.phase == frontpack::Phase::certify) {
     if (p.fraction < 1.0) {
       phase("certifying " + std::to_string(p.disks) + " disks (exact containment and overlap)");

@@ -148,6 +148,7 @@ inline constexpr std::size_t peak_bytes_per_disk = 64;
 enum class Phase : std::uint8_t {
   generate,  ///< the advancing front
   certify,   ///< the exact containment and overlap passes
+  jam,       ///< FillOptions::jam: rounds of insertion and relaxation (fraction: of the rounds, roughly)
 };
 
 /// Progress of a run, reported through Generator::on_progress.
@@ -201,7 +202,9 @@ class Generator {
  public:
   Generator(Domain domain, FillOptions options);
   /// Called about every 2^14 disks generated, once the front is done (fraction 1), and as the
-  /// certification starts and ends (Phase::certify, fraction 0 and 1); returning false while
+  /// certification starts and ends (Phase::certify, fraction 0 and 1), and with FillOptions::jam
+  /// every 64 relaxation steps and after each round (Phase::jam, between the front and the
+  /// certification; false ends the stage, the round under way undone); returning false while
   /// generating cancels the run, which then returns the certified packing of what was generated
   /// so far, with cancelled = true (later return values are ignored). FillOptions::stop instead
   /// cancels the whole run, certification included.

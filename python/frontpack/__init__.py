@@ -61,6 +61,7 @@ def fill(
     fraction=None,
     count=0,
     height=None,
+    jam=False,
     progress=None,
     stop=None,
 ):
@@ -82,6 +83,10 @@ def fill(
     in a compact region (closed and open forms); `height`, only the part below y = height is
     filled (every disk has y + r <= height).
 
+    `jam=True`: after the front, disks are inserted and the overlaps relaxed away until the
+    packing jams (denser at narrow size ranges: bidisperse 1:1.4 about 0.837 instead of 0.815;
+    little change at wide ones; not with fraction or count; docs/jam.md). Progress phase "jam".
+
     `progress`: a callable taking a Progress, called about every 16384 disks and at each phase
     (returning False stops generating: the packing of what was generated, certified, with
     Packing.cancelled), or True for a bar (tqdm when importable). The GIL is released while the
@@ -96,7 +101,7 @@ def fill(
     try:
         return _core._fill(
             d, radius, method, seed, window, start, clearance, fill_voids, max_disks, memory_limit, fraction, count,
-            height, callback, stop,
+            height, jam, callback, stop,
         )
     finally:
         close()

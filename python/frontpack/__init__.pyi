@@ -150,7 +150,7 @@ class Progress:
     disks: int
     fraction: float
     area: float
-    phase: Literal["generate", "certify"]
+    phase: Literal["generate", "certify", "jam"]
 
 class StopSource:
     def __init__(self) -> None: ...
@@ -201,6 +201,7 @@ def fill(
     fraction: Optional[float] = None,
     count: int = 0,
     height: Optional[float] = None,
+    jam: bool = False,
     progress: Union[None, bool, Callable[[Progress], Optional[bool]]] = None,
     stop: Optional[StopSource] = None,
 ) -> Packing: ...

@@ -4,7 +4,7 @@ import sys
 
 
 class _Bar:
-    """A bar in percent of the area to fill, then of the certification."""
+    """A bar in percent of the area to fill, then of the jam stage's rounds (fill(jam=True)), then of the certification."""
 
     def __init__(self):
         try:
@@ -20,7 +20,7 @@ class _Bar:
             self._phase = p.phase
             if self._tqdm is not None:
                 self._tqdm.reset(total=100)
-                self._tqdm.set_description("certifying")
+                self._tqdm.set_description({"certify": "certifying", "jam": "jamming"}.get(p.phase, p.phase))
         if self._tqdm is not None:
             self._tqdm.update(percent - self._tqdm.n)
             self._tqdm.set_postfix(disks=p.disks, refresh=False)

@@ -19,6 +19,15 @@ namespace frontpack::python {
 
 namespace {
 
+const char* phase_name(Phase phase) {
+  switch (phase) {
+    case Phase::generate: return "generate";
+    case Phase::certify: return "certify";
+    case Phase::jam: return "jam";
+  }
+  return "unknown";
+}
+
 struct PyPacking {
   py::array disks;
   Certificate certificate;
@@ -154,11 +163,11 @@ void bind_fill(py::module_& m) {
                     "the front is done). Certifying: 0 as it starts, 1 at the end.")
       .def_readonly("area", &Progress::area, "Area of the disks generated so far.")
       .def_property_readonly(
-          "phase", [](const Progress& p) { return p.phase == Phase::generate ? "generate" : "certify"; },
+          "phase", [](const Progress& p) { return phase_name(p.phase); },
           "'generate' (the advancing front) or 'certify' (the exact passes).")
       .def("__repr__", [](const Progress& p) {
-        return "<frontpack.Progress " + std::string(p.phase == Phase::generate ? "generate" : "certify") + " " +
-               std::to_string(p.disks) + " disks, " + py::repr(py::float_(p.fraction)).cast<std::string>() + ">";
+        return "<frontpack.Progress " + std::string(phase_name(p.phase)) + " " + std::to_string(p.disks) + " disks, " +
+               py::repr(py::float_(p.fraction)).cast<std::string>() + ">";
       });
 
   py::class_<FillStats>(m, "FillStats", "Counters of the advancing front (diagnostics).")
@@ -197,7 +206,7 @@ void bind_fill(py::module_& m) {
       [](const Domain& domain, const py::handle& radius, const std::string& method, std::uint64_t seed,
          std::size_t window, const std::optional<std::pair<double, double>>& start, double clearance, bool fill_voids,
          std::size_t max_disks, std::size_t memory_limit, std::optional<double> fraction, std::size_t count,
-         std::optional<double> height, const py::object& progress, const py::object& stop) {
+         std::optional<double> height, bool jam, const py::object& progress, const py::object& stop) {
         FillOptions o;
         o.method = method_from(method);
         o.radii = radii_from(radius);
@@ -213,11 +222,12 @@ void bind_fill(py::module_& m) {
         o.fraction = fraction;
         o.count = count;
         o.height = height;
+        o.jam = jam;
         return run(domain, std::move(o), progress, stop);
       },
       py::arg("domain"), py::arg("radius"), py::arg("method"), py::arg("seed"), py::arg("window"), py::arg("start"),
       py::arg("clearance"), py::arg("fill_voids"), py::arg("max_disks"), py::arg("memory_limit"), py::arg("fraction"),
-      py::arg("count"), py::arg("height"), py::arg("progress"), py::arg("stop"),
+      py::arg("count"), py::arg("height"), py::arg("jam"), py::arg("progress"), py::arg("stop"),
       "fill() without the shape conversion and the progress bar.");
 
   // For bench/python_overhead.py: frontpack::fill alone (no callback), timed in C++.

@@ -256,3 +256,24 @@ def test_periodic_cell_wraps_with_the_default_and_the_closed_form(method):
 def test_open_form_refuses_a_periodic_cell():
     with pytest.raises(frontpack.OptionError, match="the open form does not wrap around a cell"):
         frontpack.fill(frontpack.Domain.periodic((0, 0, 1, 1)), "uniform:0.01,0.05", method="open")
+
+
+def test_jam_is_denser_reports_its_phase_and_stops_when_asked():
+    square = "POLYGON((0 0,1 0,1 1,0 1,0 0))"
+    radii = "discrete:0.014:0.5,0.0196:0.5"
+    plain = frontpack.fill(square, radii, seed=1)
+    seen = []
+    jammed = frontpack.fill(square, radii, seed=1, jam=True, progress=seen.append)
+    assert frontpack.certify(square, jammed.disks)
+    assert set(jammed.disks[:, 2]) == {0.014, 0.0196}
+    area = lambda p: float(np.sum(np.pi * p.disks[:, 2] ** 2))  # noqa: E731
+    assert area(jammed) > area(plain) + 0.01 and not jammed.cancelled
+    phases = [s.phase for s in seen]
+    assert "jam" in phases
+    assert phases.index("jam") > max(i for i, s in enumerate(phases) if s == "generate")
+    # False from the callback during the stage ends it: the rounds kept so far, certified.
+    stopped = frontpack.fill(square, radii, seed=1, jam=True, progress=lambda s: s.phase != "jam")
+    assert stopped.cancelled and len(plain) <= len(stopped) < len(jammed)
+    assert frontpack.certify(square, stopped.disks)
+    with pytest.raises(frontpack.OptionError, match="jam"):
+        frontpack.fill(square, radii, jam=True, fraction=0.6)

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
+#include <cstdint>
 
 #include "domain/edge_distance.hpp"
 #include "jam/relaxation.hpp"
@@ -33,18 +35,21 @@ bool draw_point(const Domain& domain, const Box& box, Rng& rng, Point& out) {
   return false;
 }
 
-// Whether every disk that could have reached a wall still has its centre inside the domain: the
-// relaxation pushes a disk off a wall from the wall's side it is on, so one pressed through a
-// wall would be pushed on outwards. (The others cannot have crossed one: Relaxation::near_wall().)
-bool stayed_inside(const Domain& domain, const std::vector<Disk>& disks, const std::vector<std::uint32_t>& near_wall) {
-  return std::all_of(near_wall.begin(), near_wall.end(),
-                     [&](std::uint32_t i) { return domain.locate(disks[i].centre) == Location::inside; });
+// Whether every disk lies in the domain, decided exactly. A disk pressed hard enough against a
+// wall by the disks inserted behind it can cross it (each step moves it at most 0.1 rmin, but the
+// wall holds it with a force of at most its radius), and once its centre is across, the wall pushes
+// it on outwards, possibly beyond the reach of any later check of the walls near it; so every
+// round kept is checked whole (a few exact tests per disk, against thousands of relaxation steps).
+bool all_inside(const Domain& domain, const std::vector<Disk>& disks, std::vector<std::uint8_t>& inside) {
+  inside.resize(disks.size());
+  domain.contains(disks, inside);
+  return std::all_of(inside.begin(), inside.end(), [](std::uint8_t b) { return b != 0; });
 }
 
 }  // namespace
 
-void jam(const Domain& domain, const RadiusDistribution& radii, double clearance, Rng& rng, std::vector<Disk>& disks,
-         const std::stop_token& stop, FillStats& stats) {
+bool jam(const Domain& domain, const RadiusDistribution& radii, double clearance, Rng& rng, std::vector<Disk>& disks,
+         const std::function<bool(std::size_t, double)>& tick, const std::stop_token& stop, FillStats& stats) {
   const auto t0 = std::chrono::steady_clock::now();
   const Box box = domain.bbox();
   const EdgeDistanceIndex walls(domain, 2 * radii.max());
@@ -60,24 +65,32 @@ void jam(const Domain& domain, const RadiusDistribution& radii, double clearance
   const std::size_t n = disks.size();
   std::size_t k = std::max<std::size_t>(1, n / kFirstShare);
   const std::size_t last = std::max<std::size_t>(1, n / kLastShare);
+  // The fraction of the rounds done, as the halvings of k from the first to the last.
+  const double halvings = std::log2(static_cast<double>(k) / static_cast<double>(last)) + 1;
+  const auto done = [&] { return 1 - (std::log2(static_cast<double>(k) / static_cast<double>(last)) + 1) / halvings; };
+  bool going = true;
+  const std::function<bool()> keep_going = [&] { return !tick || (going = going && tick(disks.size(), done())); };
   std::vector<Disk> trial;
-  while (k >= last && !disks.empty()) {
+  std::vector<std::uint8_t> inside;
+  while (k >= last && !disks.empty() && going) {
     trial = disks;
     Point p;
     for (std::size_t q = 0; q < k && draw_point(domain, box, rng, p); ++q) {
       trial.push_back(Disk{p, radii.quantile(rng.uniform())});
     }
     ++stats.jam_rounds;
-    const bool relaxed = relaxation.run(trial, kSteps, stop);
+    const bool relaxed = relaxation.run(trial, kSteps, keep_going, stop);
     stats.jam_steps += relaxation.iterations();
-    if (relaxed && stayed_inside(domain, trial, relaxation.near_wall())) {
+    if (relaxed && going && all_inside(domain, trial, inside)) {
       stats.jam_inserted += trial.size() - disks.size();
       disks.swap(trial);
     } else {
       k /= 2;
     }
+    going = going && keep_going();
   }
   stats.seconds_jam = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return going;
 }
 
 }  // namespace frontpack::detail

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstddef>
+#include <functional>
 #include <stop_token>
 #include <vector>
 
@@ -20,8 +21,11 @@ namespace frontpack::detail {
 /// Ends when a round of a few per ten thousand disks fails. The disks stay in their polygons (none
 /// crosses a wall), the drawn radii are kept, and the result goes to the certifier. `clearance`:
 /// the generators' (the relaxation keeps 4 of them between disks). Deterministic for `rng`'s
-/// state. Records rounds, insertions, steps and time in stats.
-void jam(const Domain& domain, const RadiusDistribution& radii, double clearance, Rng& rng, std::vector<Disk>& disks,
-         const std::stop_token& stop, FillStats& stats);
+/// state. Records rounds, insertions, steps and time in stats. `tick` (may be empty) is called
+/// with the disks and the fraction of the rounds done every 64 relaxation steps and after each
+/// round; once it returns false the round under way is undone and jam() returns false.
+/// Throws CancelledError once `stop` is requested.
+bool jam(const Domain& domain, const RadiusDistribution& radii, double clearance, Rng& rng, std::vector<Disk>& disks,
+         const std::function<bool(std::size_t, double)>& tick, const std::stop_token& stop, FillStats& stats);
 
 }  // namespace frontpack::detail

@@ -194,7 +194,8 @@ double Relaxation::forces(const std::vector<Disk>& disks) {
   return worst;
 }
 
-bool Relaxation::run(std::vector<Disk>& disks, std::size_t max_iterations, const std::stop_token& stop) {
+bool Relaxation::run(std::vector<Disk>& disks, std::size_t max_iterations, const std::function<bool()>& keep_going,
+                     const std::stop_token& stop) {
   const std::size_t n = disks.size();
   force_.assign(n, Point{0, 0});
   velocity_.assign(n, Point{0, 0});
@@ -208,6 +209,9 @@ bool Relaxation::run(std::vector<Disk>& disks, std::size_t max_iterations, const
   double last_window = 0;
   for (iterations_ = 0; iterations_ < max_iterations; ++iterations_) {
     throw_if_stopped(stop);
+    if (iterations_ % 64 == 63 && keep_going && !keep_going()) {
+      return false;
+    }
     const double w = forces(disks);
     if (w <= 0) {
       return true;

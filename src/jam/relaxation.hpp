@@ -8,6 +8,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <stop_token>
 #include <vector>
 
@@ -43,11 +44,9 @@ class Relaxation {
   /// every pair lies at least half its gap apart and every disk half its gap from every wall
   /// (then no two overlap and none crosses a wall, up to the certifier's exact decision), false
   /// if the iterations ran out first (the disks are left where the last step put them).
-  bool run(std::vector<Disk>& disks, std::size_t max_iterations, const std::stop_token& stop);
-
-  /// The disks that lay within reach of a wall when the lists were last built: no other disk can
-  /// have crossed one (each has moved less than half the skin since).
-  [[nodiscard]] const std::vector<std::uint32_t>& near_wall() const noexcept { return near_wall_; }
+  /// `keep_going` (may be empty) is asked every 64 steps; false ends the run (returns false).
+  bool run(std::vector<Disk>& disks, std::size_t max_iterations, const std::function<bool()>& keep_going,
+           const std::stop_token& stop);
 
   /// Steps taken by the last run().
   [[nodiscard]] std::size_t iterations() const noexcept { return iterations_; }

@@ -1,5 +1,5 @@
 # The invariants the source tree keeps (docs/architecture.md), checked on the files themselves:
-#   1. Nothing under src/generate/ includes CGAL, directly or through our own headers: the
+#   1. Nothing under src/generate/ or src/jam/ includes CGAL, directly or through our own headers: the
 #      generators are plain floating point, and exact decisions reach them only through the
 #      CGAL-free facade exact/overlap.hpp.
 #   2. No public header includes CGAL, except include/frontpack/cgal.hpp (opt-in interop).
@@ -57,7 +57,8 @@ function(cgal_chain file out)
   set(${out} "" PARENT_SCOPE)
 endfunction()
 
-file(GLOB_RECURSE generate_files "${SOURCE_DIR}/src/generate/*.hpp" "${SOURCE_DIR}/src/generate/*.cpp")
+file(GLOB_RECURSE generate_files "${SOURCE_DIR}/src/generate/*.hpp" "${SOURCE_DIR}/src/generate/*.cpp"
+     "${SOURCE_DIR}/src/jam/*.hpp" "${SOURCE_DIR}/src/jam/*.cpp")
 if(NOT generate_files)
   string(APPEND failures "  no files found under src/generate/\n")
 endif()
@@ -92,4 +93,4 @@ endif()
 list(LENGTH generate_files ng)
 list(LENGTH public_headers nh)
 list(LENGTH sources ns)
-message(STATUS "layout: ${ng} files in src/generate/ and ${nh} public headers CGAL-free; ${ns} sources within 600 lines")
+message(STATUS "layout: ${ng} files in src/generate/ and src/jam/ and ${nh} public headers CGAL-free; ${ns} sources within 600 lines")
