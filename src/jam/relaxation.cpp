@@ -171,12 +171,13 @@ double Relaxation::forces(const std::vector<Disk>& disks) {
     const double delta = s - d;
     worst = std::max(worst, delta - g / 2);
     // Two centres at the same point (two disks inserted there) part along x.
-    const double ux = d > 0 ? dx / d : 1;
-    const double uy = d > 0 ? dy / d : 0;
-    force_[p.j].x += delta * ux;
-    force_[p.j].y += delta * uy;
-    force_[p.i].x -= delta * ux;
-    force_[p.i].y -= delta * uy;
+    const double k = d > 0 ? delta / d : 0;
+    const double fx = d > 0 ? k * dx : delta;
+    const double fy = k * dy;
+    force_[p.j].x += fx;
+    force_[p.j].y += fy;
+    force_[p.i].x -= fx;
+    force_[p.i].y -= fy;
   }
   for (const std::uint32_t i : near_wall_) {
     const Disk& a = disks[i];
@@ -187,8 +188,9 @@ double Relaxation::forces(const std::vector<Disk>& disks) {
         return;
       }
       worst = std::max(worst, delta - g / 2);
-      force_[i].x += delta * (a.centre.x - q.x) / dist;
-      force_[i].y += delta * (a.centre.y - q.y) / dist;
+      const double k = delta / dist;
+      force_[i].x += k * (a.centre.x - q.x);
+      force_[i].y += k * (a.centre.y - q.y);
     });
   }
   return worst;
