@@ -48,8 +48,9 @@ bool all_inside(const Domain& domain, const std::vector<Disk>& disks, std::vecto
 
 }  // namespace
 
-bool jam(const Domain& domain, const RadiusDistribution& radii, double clearance, Rng& rng, std::vector<Disk>& disks,
-         const std::function<bool(std::size_t, double)>& tick, const std::stop_token& stop, FillStats& stats) {
+bool jam(const Domain& domain, const RadiusDistribution& radii, double clearance, std::size_t max_disks, Rng& rng,
+         std::vector<Disk>& disks, const std::function<bool(std::size_t, double)>& tick, const std::stop_token& stop,
+         FillStats& stats) {
   const auto t0 = std::chrono::steady_clock::now();
   const Box box = domain.bbox();
   const EdgeDistanceIndex walls(domain, 2 * radii.max());
@@ -72,10 +73,11 @@ bool jam(const Domain& domain, const RadiusDistribution& radii, double clearance
   const std::function<bool()> keep_going = [&] { return !tick || (going = going && tick(disks.size(), done())); };
   std::vector<Disk> trial;
   std::vector<std::uint8_t> inside;
-  while (k >= last && !disks.empty() && going) {
+  while (k >= last && !disks.empty() && going && disks.size() < max_disks) {
     trial = disks;
     Point p;
-    for (std::size_t q = 0; q < k && draw_point(domain, box, rng, p); ++q) {
+    const std::size_t room = std::min(k, max_disks - disks.size());
+    for (std::size_t q = 0; q < room && draw_point(domain, box, rng, p); ++q) {
       trial.push_back(Disk{p, radii.quantile(rng.uniform())});
     }
     ++stats.jam_rounds;

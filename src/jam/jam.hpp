@@ -24,8 +24,10 @@ namespace frontpack::detail {
 /// state. Records rounds, insertions, steps and time in stats. `tick` (may be empty) is called
 /// with the disks and the fraction of the rounds done every 64 relaxation steps and after each
 /// round; once it returns false the round under way is undone and jam() returns false.
-/// Throws CancelledError once `stop` is requested.
-bool jam(const Domain& domain, const RadiusDistribution& radii, double clearance, Rng& rng, std::vector<Disk>& disks,
-         const std::function<bool(std::size_t, double)>& tick, const std::stop_token& stop, FillStats& stats);
+/// Never makes more than max_disks disks (FillOptions::max_disks). Throws CancelledError once
+/// `stop` is requested.
+bool jam(const Domain& domain, const RadiusDistribution& radii, double clearance, std::size_t max_disks, Rng& rng,
+         std::vector<Disk>& disks, const std::function<bool(std::size_t, double)>& tick, const std::stop_token& stop,
+         FillStats& stats);
 
 }  // namespace frontpack::detail

@@ -25,7 +25,8 @@
 //                                 that replaces the star rings; 6 keeps them (nothing more is read); 7
 //                                 keeps them and reads one more byte p: p % 4 == 1 fills the rings' box
 //                                 as a periodic cell in x and y instead, p % 4 == 2 as a shear cell
-//                                 (periodic in x, walls at the bottom and top)
+//                                 (periodic in x, walls at the bottom and top), p % 4 == 3 fills
+//                                 the rings with the jam stage (FillOptions::jam), at most 2,000 disks
 //
 // Why this encoding: the inputs made before the boundary method and fill_voids (the 32 corpus
 // seeds and the 2 regressions committed before) must keep their meaning, and that layout read
@@ -501,6 +502,7 @@ void fill(const std::uint8_t* data, std::size_t size) {
   const bool constant = (in.byte() & 1) != 0;
   const std::uint8_t repeat = in.byte();
   Periodicity periodicity = Periodicity::none;
+  bool jam = false;
   const std::size_t extension_at = in.pos();
   if (!in.empty()) {
     const int kind = in.in_range(8);  // 6, 7: keep the star rings
@@ -509,6 +511,7 @@ void fill(const std::uint8_t* data, std::size_t size) {
     } else if (kind == 7) {
       const int p = in.in_range(4);
       periodicity = p == 1 ? Periodicity::xy : p == 2 ? Periodicity::x : Periodicity::none;
+      jam = p == 3;
     }
   }
 
@@ -529,7 +532,8 @@ void fill(const std::uint8_t* data, std::size_t size) {
   options.seed = seed;
   options.window = window < 200 ? 5 : window % 8;  // mostly the paper's 5; sometimes 0 (whole front)..7
   options.fill_voids = (repeat & 0x08) == 0 || options.method == Method::boundary;  // boundary: always
-  options.max_disks = 20'000;                                                       // bounded work per input
+  options.max_disks = jam ? 2'000 : 20'000;  // bounded work per input (a jam round relaxes every disk)
+  options.jam = jam;
   try {
     // rmax from the domain's size down to 2^-10 of it; rmax / rmin up to 1024.
     const Box b = domain->bbox();
@@ -548,11 +552,13 @@ void fill(const std::uint8_t* data, std::size_t size) {
   if (verbose()) {  // to reproduce a finding by hand
     const RadiusDistribution& r = options.radii.distribution();
     std::fprintf(stderr,
-                 "domain %s (%s)\nmethod %s seed %llu window %zu fill_voids %d max_disks %zu radii %s [%.17g, %.17g]\n"
+                 "domain %s (%s)\nmethod %s seed %llu window %zu fill_voids %d max_disks %zu jam %d radii %s [%.17g, "
+                 "%.17g]\n"
                  "bytes: method at %zu, extension at %zu\n",
                  domain->to_wkt().c_str(), to_string(domain->periodicity()), to_string(options.method),
                  static_cast<unsigned long long>(options.seed), options.window, options.fill_voids ? 1 : 0,
-                 options.max_disks, constant ? "constant" : "uniform", r.min(), r.max(), method_at, extension_at);
+                 options.max_disks, options.jam ? 1 : 0, constant ? "constant" : "uniform", r.min(), r.max(), method_at,
+                 extension_at);
   }
   Packing packing;
   try {
