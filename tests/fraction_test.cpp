@@ -24,13 +24,7 @@ fp::Domain plate() {
   return fp::Domain::from_wkt_file(fp::test::shapes_dir() / "plate_with_holes.wkt");
 }
 
-double fraction_of(const fp::Domain& domain, const std::vector<fp::Disk>& disks) {
-  double a = 0;
-  for (const fp::Disk& d : disks) {
-    a += std::numbers::pi * d.radius * d.radius;
-  }
-  return a / domain.area();
-}
+using fp::test::fraction_of;
 
 void expect_certified(const fp::Domain& domain, const std::vector<fp::Disk>& disks) {
   const fp::CertifyReport r = fp::certify(domain, disks);

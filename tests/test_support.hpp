@@ -90,6 +90,15 @@ inline Packing fill(const Domain& d, Method m, Radii radii, std::uint64_t seed =
   return frontpack::fill(d, o);
 }
 
+/// Total disk area over the domain's area.
+inline double fraction_of(const Domain& domain, const std::vector<Disk>& disks) {
+  double a = 0;
+  for (const Disk& d : disks) {
+    a += std::numbers::pi * d.radius * d.radius;
+  }
+  return a / domain.area();
+}
+
 /// The packing fill() certified: decided exactly, nothing dropped, and an independent certify()
 /// call on the disks finds no overlapping pair and no disk outside.
 inline void expect_certified(const Domain& d, const Packing& p) {
