@@ -115,6 +115,18 @@ TEST(Jam, PeriodicCells) {
   }
 }
 
+TEST(Jam, EndsWhenItsBoxIsMostlyOutside) {
+  // A unit square and a speck 1,000 away: the domain covers a millionth of its box, so nearly
+  // every round draws no point of it. Such a round counts as failed, so k shrinks and the stage
+  // ends (counted as kept, the rounds went on until one that drew a point failed).
+  const fp::Domain domain = fp::Domain::from_wkt(
+      "MULTIPOLYGON(((0 0,1 0,1 1,0 1,0 0)),((1000 1000,1000.1 1000,1000.1 1000.1,1000 1000.1,1000 1000)))");
+  const fp::Packing p = fp::fill(domain, bidisperse(6, true));
+  expect_certified(domain, p);
+  EXPECT_GE(p.stats.jam_rounds, 1u);
+  EXPECT_LT(p.stats.jam_rounds, 20u);
+}
+
 TEST(Jam, RefusesATargetFractionOrACount) {
   const fp::Domain domain = unit_square();
   fp::FillOptions o = bidisperse(1, true);

@@ -83,7 +83,9 @@ bool jam(const Domain& domain, const RadiusDistribution& radii, double clearance
     ++stats.jam_rounds;
     const bool relaxed = relaxation.run(trial, kSteps, keep_going, stop);
     stats.jam_steps += relaxation.iterations();
-    if (relaxed && going && all_inside(domain, trial, inside)) {
+    // A round that drew no point of the domain (one covering a sliver of its box) fails too, so
+    // that k shrinks and the stage ends.
+    if (relaxed && going && trial.size() > disks.size() && all_inside(domain, trial, inside)) {
       stats.jam_inserted += trial.size() - disks.size();
       disks.swap(trial);
     } else {

@@ -78,12 +78,21 @@ void Relaxation::build_lists(const std::vector<Disk>& disks) {
   const double y0 = b.ymin - margin_y;
   const double w = b.xmax - b.xmin + 2 * margin_x;
   const double h = b.ymax - b.ymin + 2 * margin_y;
-  // On a periodic axis the cells tile the period exactly (at least 3 of them: the cell is at
-  // least 10 rmax across), so that the neighbours of a cell wrap onto whole cells.
-  const std::size_t nx =
-      wrap_x ? std::max<std::size_t>(3, static_cast<std::size_t>(w / reach)) : axis_cells(w / reach, kMaxAxisCells);
-  const std::size_t ny =
-      wrap_y ? std::max<std::size_t>(3, static_cast<std::size_t>(h / reach)) : axis_cells(h / reach, kMaxAxisCells);
+  // Cells at least `reach` wide, and at most 4 per disk: a domain whose parts lie far apart covers
+  // little of its box (a square and a speck 1,000 away: a millionth), and cells of `reach` there
+  // would be billions. Larger cells find the same pairs, scanning more disks.
+  const double most = std::max(1024.0, 4.0 * static_cast<double>(disks.size()));
+  const double side = (w / reach) * (h / reach) > most ? std::sqrt(w * h / most) : reach;
+  // Whole cells of at least `side` (the last takes what is left), so that every pair within reach
+  // lies in neighbouring cells. On a periodic axis they tile the period (at least 3 of them, each
+  // still wider than reach: the cell is at least 10 rmax across, reach about 2.5 rmax), so that the
+  // neighbours of a cell wrap onto whole cells.
+  const auto cells = [side](double length, bool wrap) {
+    const auto whole = static_cast<std::size_t>(std::min(length / side, static_cast<double>(kMaxAxisCells)));
+    return std::max<std::size_t>(wrap ? 3 : 1, whole);
+  };
+  const std::size_t nx = cells(w, wrap_x);
+  const std::size_t ny = cells(h, wrap_y);
   const double inv_x = static_cast<double>(nx) / w;
   const double inv_y = static_cast<double>(ny) / h;
   const auto cell_of = [&](const Disk& d) {
