@@ -270,6 +270,7 @@ def test_jam_is_denser_reports_its_phase_and_stops_when_asked():
     assert area(jammed) > area(plain) + 0.01 and not jammed.cancelled
     phases = [s.phase for s in seen]
     assert "jam" in phases
+    assert all(0.0 <= s.fraction <= 1.0 for s in seen)
     assert phases.index("jam") > max(i for i, s in enumerate(phases) if s == "generate")
     # False from the callback during the stage ends it: the rounds kept so far, certified.
     stopped = frontpack.fill(square, radii, seed=1, jam=True, progress=lambda s: s.phase != "jam")

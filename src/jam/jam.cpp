@@ -68,7 +68,11 @@ bool jam(const Domain& domain, const RadiusDistribution& radii, double clearance
   const std::size_t last = std::max<std::size_t>(1, n / kLastShare);
   // The fraction of the rounds done, as the halvings of k from the first to the last.
   const double halvings = std::log2(static_cast<double>(k) / static_cast<double>(last)) + 1;
-  const auto done = [&] { return 1 - (std::log2(static_cast<double>(k) / static_cast<double>(last)) + 1) / halvings; };
+  // (k reaches 0 after the last round: 1.)
+  const auto done = [&] {
+    const double left = k == 0 ? 0 : std::log2(static_cast<double>(k) / static_cast<double>(last)) + 1;
+    return std::clamp(1 - left / halvings, 0.0, 1.0);
+  };
   bool going = true;
   const std::function<bool()> keep_going = [&] { return !tick || (going = going && tick(disks.size(), done())); };
   std::vector<Disk> trial;
