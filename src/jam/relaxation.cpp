@@ -46,6 +46,10 @@ bool neighbour(std::size_t c, int offset, std::size_t n, bool wrap, std::size_t&
 }  // namespace
 
 Relaxation::Relaxation(const RelaxationFrame& frame) : frame_(frame) {
+  wrap_.x = frame_.periodicity != Periodicity::none;
+  wrap_.y = frame_.periodicity == Periodicity::xy;
+  wrap_.lx = frame_.cell.xmax - frame_.cell.xmin;
+  wrap_.ly = frame_.cell.ymax - frame_.cell.ymin;
   // The skin: a pair is listed when it lies within its separation plus the skin, so the lists
   // hold until some disk has moved half the skin. A step moves a disk at most a tenth of rmin.
   skin_ = 0.5 * frame_.rmin;
@@ -56,22 +60,15 @@ double Relaxation::gap(double r1, double r2) const noexcept {
 }
 
 void Relaxation::wrap_difference(double& dx, double& dy) const noexcept {
-  if (frame_.periodicity == Periodicity::none) {
-    return;
-  }
-  const double lx = frame_.cell.xmax - frame_.cell.xmin;
-  dx -= lx * std::nearbyint(dx / lx);
-  if (frame_.periodicity == Periodicity::xy) {
-    const double ly = frame_.cell.ymax - frame_.cell.ymin;
-    dy -= ly * std::nearbyint(dy / ly);
-  }
+  dx = wrap_.dx(dx);
+  dy = wrap_.dy(dy);
 }
 
 void Relaxation::build_lists(const std::vector<Disk>& disks) {
   const Box& b = frame_.cell;
   const double reach = 2 * frame_.rmax + gap(frame_.rmax, frame_.rmax) + skin_;
-  const bool wrap_x = frame_.periodicity != Periodicity::none;
-  const bool wrap_y = frame_.periodicity == Periodicity::xy;
+  const bool wrap_x = wrap_.x;
+  const bool wrap_y = wrap_.y;
   const double margin_x = wrap_x ? 0 : reach;
   const double margin_y = wrap_y ? 0 : reach;
   const double x0 = b.xmin - margin_x;
@@ -279,15 +276,12 @@ bool Relaxation::run(std::vector<Disk>& disks, std::size_t max_iterations, const
       Point& c = disks[i].centre;
       c.x += sx;
       c.y += sy;
-      if (frame_.periodicity != Periodicity::none) {
-        const double lx = cell.xmax - cell.xmin;
-        c.x = c.x < cell.xmin ? c.x + lx : c.x >= cell.xmax ? c.x - lx : c.x;
-        c.x = c.x >= cell.xmax ? cell.xmin : c.x;
-        if (frame_.periodicity == Periodicity::xy) {
-          const double ly = cell.ymax - cell.ymin;
-          c.y = c.y < cell.ymin ? c.y + ly : c.y >= cell.ymax ? c.y - ly : c.y;
-          c.y = c.y >= cell.ymax ? cell.ymin : c.y;
-        }
+      // Kept in the cell on a periodic axis (PeriodicWrap's wrap, in the cell's coordinates).
+      if (c.x < cell.xmin || c.x >= cell.xmax) {
+        c.x = cell.xmin + wrap_.wrap_x(c.x - cell.xmin);
+      }
+      if (c.y < cell.ymin || c.y >= cell.ymax) {
+        c.y = cell.ymin + wrap_.wrap_y(c.y - cell.ymin);
       }
       double mx = c.x - built_at_[i].x;
       double my = c.y - built_at_[i].y;

@@ -15,6 +15,7 @@
 #include "domain/edge_distance.hpp"
 #include "frontpack/domain.hpp"
 #include "frontpack/geometry.hpp"
+#include "generate/periodic_wrap.hpp"
 
 namespace frontpack::detail {
 
@@ -67,6 +68,7 @@ class Relaxation {
   double forces(const std::vector<Disk>& disks);
 
   RelaxationFrame frame_;
+  PeriodicWrap wrap_;  // the minimum image and the wrap into the cell, as the fronts have them
   double skin_ = 0;
   std::size_t iterations_ = 0;
   // Reused from run to run and build to build: nothing is allocated per step.
