@@ -55,15 +55,6 @@ Relaxation::Relaxation(const RelaxationFrame& frame) : frame_(frame) {
   skin_ = 0.5 * frame_.rmin;
 }
 
-double Relaxation::gap(double r1, double r2) const noexcept {
-  return std::max(kRelativeGap * (r1 + r2), frame_.least_gap);
-}
-
-void Relaxation::wrap_difference(double& dx, double& dy) const noexcept {
-  dx = wrap_.dx(dx);
-  dy = wrap_.dy(dy);
-}
-
 void Relaxation::build_lists(const std::vector<Disk>& disks) {
   const Box& b = frame_.cell;
   const double reach = 2 * frame_.rmax + gap(frame_.rmax, frame_.rmax) + skin_;
@@ -241,18 +232,17 @@ bool Relaxation::run(std::vector<Disk>& disks, std::size_t max_iterations, const
       vv += velocity_[i].x * velocity_[i].x + velocity_[i].y * velocity_[i].y;
       ff += force_[i].x * force_[i].x + force_[i].y * force_[i].y;
     }
-    if (power > 0) {
-      const double scale = ff > 0 ? mix * std::sqrt(vv / ff) : 0;
-      for (std::size_t i = 0; i < n; ++i) {
-        velocity_[i].x = (1 - mix) * velocity_[i].x + scale * force_[i].x;
-        velocity_[i].y = (1 - mix) * velocity_[i].y + scale * force_[i].y;
-      }
+    // FIRE's mixing of the velocities (with this step's mix), then its new time step and mix; the
+    // loop below mixes each velocity and moves its disk with that time step.
+    const bool mixing = power > 0;
+    const double scale = mixing && ff > 0 ? mix * std::sqrt(vv / ff) : 0;
+    const double keep = 1 - mix;
+    if (mixing) {
       if (++power_steps > kPowerSteps) {
         dt = std::min(dt * kGrow, kStepMax);
         mix *= kMixDecay;
       }
     } else {
-      std::fill(velocity_.begin(), velocity_.end(), Point{0, 0});
       dt *= kCut;
       mix = kMix;
       power_steps = 0;
@@ -260,6 +250,12 @@ bool Relaxation::run(std::vector<Disk>& disks, std::size_t max_iterations, const
     bool rebuild = false;
     for (std::size_t i = 0; i < n; ++i) {
       Point& v = velocity_[i];
+      if (mixing) {
+        v.x = keep * v.x + scale * force_[i].x;
+        v.y = keep * v.y + scale * force_[i].y;
+      } else {
+        v = Point{0, 0};
+      }
       v.x += dt * force_[i].x;
       v.y += dt * force_[i].y;
       double sx = dt * v.x;

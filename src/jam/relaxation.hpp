@@ -6,6 +6,7 @@
 // output does. The disks' radii never change.
 #pragma once
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <functional>
@@ -58,9 +59,14 @@ class Relaxation {
     std::uint32_t j;
   };
 
-  [[nodiscard]] double gap(double r1, double r2) const noexcept;
+  [[nodiscard]] double gap(double r1, double r2) const noexcept {
+    return std::max(kRelativeGap * (r1 + r2), frame_.least_gap);
+  }
   // The difference vector b - a at its nearest image in a periodic cell.
-  void wrap_difference(double& dx, double& dy) const noexcept;
+  void wrap_difference(double& dx, double& dy) const noexcept {
+    dx = wrap_.dx(dx);
+    dy = wrap_.dy(dy);
+  }
   // The pairs lying within their separation plus the skin, and the disks within the skin of a
   // wall: rebuilt whenever a disk has moved half the skin since the last build.
   void build_lists(const std::vector<Disk>& disks);
