@@ -152,8 +152,11 @@ Packing run_plain(const Domain& domain, const FillOptions& options,
   if (options.jam && !packing.truncated && !packing.cancelled) {
     // The jam stage moves certified disks and inserts more; none leaves its polygon, so the
     // second certification asks only whether each lies in the domain (certify/cull.hpp).
+    // Progress: the front's certification ends, the stage runs, and its certification starts.
+    meter.finish(raw.size());
     packing.cancelled = !detail::jam(domain, radii, clearance, options.max_disks, rng, raw, meter.jam_tick(),
                                      options.stop, packing.stats);
+    meter.certifying(raw.size());
     FillStats second = packing.stats;
     const Certificate after = detail::certify_fill(domain, raw, {}, options.stop, second);
     packing.certificate.generated += packing.stats.jam_inserted;

@@ -120,7 +120,13 @@ void ProgressMeter::polygon_done(std::span<const Disk> disks) {
 void ProgressMeter::generated(std::size_t generated) const {
   if (progress_) {
     (void)progress_(Progress{generated, 1.0, covered_before_, Phase::generate});
-    (void)progress_(Progress{generated, 0.0, covered_before_, Phase::certify});
+  }
+  certifying(generated);
+}
+
+void ProgressMeter::certifying(std::size_t disks) const {
+  if (progress_) {
+    (void)progress_(Progress{disks, 0.0, covered_before_, Phase::certify});
   }
 }
 

@@ -46,7 +46,9 @@ class ProgressMeter {
 
   /// Reports the front's end (fraction 1, `generated` disks) and the certification's start.
   void generated(std::size_t generated) const;
-  /// Reports the certification's end.
+  /// Reports a certification's start (fraction 0), as the jam stage's certification begins.
+  void certifying(std::size_t disks) const;
+  /// Reports a certification's end (fraction 1), the fill's or the front's before the jam stage.
   void finish(std::size_t generated) const;
 
  private:

@@ -146,3 +146,48 @@ TEST(Jam, RefusesATargetFractionOrACount) {
   o.count = 100;
   EXPECT_THROW((void)fp::fill(domain, o), fp::OptionError);
 }
+
+// The progress reports in order: the front (Phase::generate, ending at 1), its certification
+// (0 then 1), the stage (Phase::jam, fractions in [0, 1] that never fall), then the stage's own
+// certification (0 then 1, with every disk of the result).
+TEST(Jam, ProgressReportsEachPhaseInOrder) {
+  const fp::Domain domain = unit_square();
+  fp::Generator g(domain, bidisperse(1, true));
+  std::vector<fp::Progress> reports;
+  g.on_progress([&](const fp::Progress& p) {
+    reports.push_back(p);
+    return true;
+  });
+  const fp::Packing p = g.run();
+  ASSERT_GT(p.stats.jam_inserted, 0u);
+  std::vector<fp::Phase> phases;
+  for (const fp::Progress& r : reports) {
+    if (phases.empty() || phases.back() != r.phase) {
+      phases.push_back(r.phase);
+    }
+  }
+  const std::vector<fp::Phase> expected{fp::Phase::generate, fp::Phase::certify, fp::Phase::jam, fp::Phase::certify};
+  ASSERT_EQ(phases, expected);
+  const auto first_jam =
+      std::find_if(reports.begin(), reports.end(), [](const fp::Progress& r) { return r.phase == fp::Phase::jam; });
+  ASSERT_GE(first_jam - reports.begin(), 3);
+  EXPECT_EQ((first_jam - 2)->phase, fp::Phase::certify);
+  EXPECT_EQ((first_jam - 2)->fraction, 0.0);
+  EXPECT_EQ((first_jam - 1)->phase, fp::Phase::certify);
+  EXPECT_EQ((first_jam - 1)->fraction, 1.0);
+  double last = 0;
+  for (auto r = first_jam; r != reports.end() && r->phase == fp::Phase::jam; ++r) {
+    EXPECT_GE(r->fraction, last);
+    EXPECT_LE(r->fraction, 1.0);
+    last = r->fraction;
+  }
+  ASSERT_GE(reports.size(), 2u);
+  const fp::Progress& start = reports[reports.size() - 2];
+  const fp::Progress& end = reports.back();
+  EXPECT_EQ(start.phase, fp::Phase::certify);
+  EXPECT_EQ(start.fraction, 0.0);
+  EXPECT_EQ(start.disks, p.certificate.generated);
+  EXPECT_EQ(end.phase, fp::Phase::certify);
+  EXPECT_EQ(end.fraction, 1.0);
+  EXPECT_EQ(end.disks, p.certificate.generated);
+}

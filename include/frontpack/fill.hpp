@@ -203,8 +203,9 @@ class Generator {
   Generator(Domain domain, FillOptions options);
   /// Called about every 2^14 disks generated, once the front is done (fraction 1), and as the
   /// certification starts and ends (Phase::certify, fraction 0 and 1), and with FillOptions::jam
-  /// every 64 relaxation steps and after each round (Phase::jam, between the front and the
-  /// certification; false ends the stage, the round under way undone); returning false while
+  /// every 64 relaxation steps and after each round (Phase::jam, after the front's certification
+  /// has ended and before the stage's own starts and ends, fraction 0 and 1 again; false ends the
+  /// stage, the round under way undone); returning false while
   /// generating cancels the run, which then returns the certified packing of what was generated
   /// so far, with cancelled = true (later return values are ignored). FillOptions::stop instead
   /// cancels the whole run, certification included.
