@@ -124,9 +124,11 @@ void Relaxation::build_lists(const std::vector<Disk>& disks) {
               double dx = disks[j].centre.x - di.centre.x;
               double dy = disks[j].centre.y - di.centre.y;
               wrap_difference(dx, dy);
-              const double s = di.radius + disks[j].radius + gap(di.radius, disks[j].radius) + skin_;
+              const double g = gap(di.radius, disks[j].radius);
+              const double contact = di.radius + disks[j].radius + g;
+              const double s = contact + skin_;
               if (dx * dx + dy * dy < s * s) {
-                pairs_.push_back({i, j});
+                pairs_.push_back({i, j, contact, g / 2});
               }
             }
           }
@@ -158,15 +160,14 @@ double Relaxation::forces(const std::vector<Disk>& disks) {
     double dx = b.centre.x - a.centre.x;
     double dy = b.centre.y - a.centre.y;
     wrap_difference(dx, dy);
-    const double g = gap(a.radius, b.radius);
-    const double s = a.radius + b.radius + g;
+    const double s = p.contact;
     const double d2 = dx * dx + dy * dy;
     if (d2 >= s * s) {
       continue;
     }
     const double d = std::sqrt(d2);
     const double delta = s - d;
-    worst = std::max(worst, delta - g / 2);
+    worst = std::max(worst, delta - p.half_gap);
     // Two centres at the same point (two disks inserted there) part along x.
     const double k = d > 0 ? delta / d : 0;
     const double fx = d > 0 ? k * dx : delta;

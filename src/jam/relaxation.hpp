@@ -57,6 +57,8 @@ class Relaxation {
   struct Pair {
     std::uint32_t i;
     std::uint32_t j;
+    double contact;   // r_i + r_j + gap: closer than this, the pair pushes apart
+    double half_gap;  // closer than contact - half_gap, the pair still overlaps
   };
 
   [[nodiscard]] double gap(double r1, double r2) const noexcept {
