@@ -6,13 +6,14 @@
 #include <cstdint>
 
 #include "domain/edge_distance.hpp"
+#include "jam/insertion.hpp"
 #include "jam/relaxation.hpp"
 
 namespace frontpack::detail {
 
 namespace {
 
-// Steps a round may take. A round the packing can take relaxes in 1,000-5,000 steps at 10,000-
+// Steps a round may take. A round the packing can take relaxes in 1,000-9,000 steps at 10,000-
 // 40,000 disks (docs/jam.md); one it cannot take is given up when it stalls (relaxation.cpp), at
 // about 2,000 steps. This bounds the rest.
 constexpr std::size_t kSteps = 20000;
@@ -20,20 +21,6 @@ constexpr std::size_t kSteps = 20000;
 // inserts 1/4096.
 constexpr std::size_t kFirstShare = 64;
 constexpr std::size_t kLastShare = 4096;
-// Draws of a point in the domain's box per point inside: a domain that covers less than 1/64 of
-// its box (a thin ring) gets fewer disks per round.
-constexpr std::size_t kTries = 64;
-
-// A point drawn uniformly in the domain (rejection in its box), or false after kTries misses.
-bool draw_point(const Domain& domain, const Box& box, Rng& rng, Point& out) {
-  for (std::size_t t = 0; t < kTries; ++t) {
-    out = Point{box.xmin + rng.uniform() * (box.xmax - box.xmin), box.ymin + rng.uniform() * (box.ymax - box.ymin)};
-    if (domain.locate(out) == Location::inside) {
-      return true;
-    }
-  }
-  return false;
-}
 
 // Whether every disk lies in the domain, decided exactly. A disk pressed hard enough against a
 // wall by the disks inserted behind it can cross it (each step moves it at most 0.1 rmin, but the
@@ -77,18 +64,15 @@ bool jam(const Domain& domain, const RadiusDistribution& radii, double clearance
   const std::function<bool()> keep_going = [&] { return !tick || (going = going && tick(disks.size(), done())); };
   std::vector<Disk> trial;
   std::vector<std::uint8_t> inside;
+  Insertion insertion(domain, walls, frame.periodicity, box, frame.rmin, frame.rmax, disks, rng);
   while (k >= last && !disks.empty() && going && disks.size() < max_disks) {
     trial = disks;
-    Point p;
-    const std::size_t room = std::min(k, max_disks - disks.size());
-    for (std::size_t q = 0; q < room && draw_point(domain, box, rng, p); ++q) {
-      trial.push_back(Disk{p, radii.quantile(rng.uniform())});
-    }
+    insertion.insert(trial, std::min(k, max_disks - disks.size()), radii, rng);
     ++stats.jam_rounds;
     const bool relaxed = relaxation.run(trial, kSteps, keep_going, stop);
     stats.jam_steps += relaxation.iterations();
-    // A round that drew no point of the domain (one covering a sliver of its box) fails too, so
-    // that k shrinks and the stage ends.
+    // A round that inserted nothing (a domain too thin for a candidate point) fails too, so that
+    // k shrinks and the stage ends.
     if (relaxed && going && trial.size() > disks.size() && all_inside(domain, trial, inside)) {
       stats.jam_inserted += trial.size() - disks.size();
       disks.swap(trial);

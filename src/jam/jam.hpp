@@ -16,7 +16,8 @@
 namespace frontpack::detail {
 
 /// Jams `disks` (pairwise apart and inside `domain`) in place: each round draws radii from
-/// `radii`, inserts disks of them at random points of the domain, and relaxes every overlap away;
+/// `radii`, inserts disks of them where the packing has the most room (insertion.hpp), and relaxes
+/// every overlap away;
 /// a round that cannot be relaxed within its steps is undone and the next inserts half as many.
 /// Ends when a round of a few per ten thousand disks fails. The disks stay in their polygons (none
 /// crosses a wall), the drawn radii are kept, and the result goes to the certifier. `clearance`:

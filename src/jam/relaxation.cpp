@@ -4,7 +4,6 @@
 #include <cmath>
 #include <limits>
 
-#include "common/grid_cells.hpp"
 #include "common/stop.hpp"
 
 namespace frontpack::detail {
@@ -28,21 +27,6 @@ constexpr double kStepMax = 0.5;
 constexpr std::size_t kWindow = 1000;
 constexpr double kStall = 0.35;
 
-// The cell `offset` (-1, 0 or 1) from cell c of an axis of n cells, wrapped on a periodic axis;
-// false where the grid ends.
-bool neighbour(std::size_t c, int offset, std::size_t n, bool wrap, std::size_t& out) noexcept {
-  if (offset < 0 && c == 0) {
-    out = n - 1;
-    return wrap;
-  }
-  if (offset > 0 && c + 1 == n) {
-    out = 0;
-    return wrap;
-  }
-  out = offset < 0 ? c - 1 : offset > 0 ? c + 1 : c;
-  return true;
-}
-
 }  // namespace
 
 Relaxation::Relaxation(const RelaxationFrame& frame) : frame_(frame) {
@@ -56,84 +40,30 @@ Relaxation::Relaxation(const RelaxationFrame& frame) : frame_(frame) {
 }
 
 void Relaxation::build_lists(const std::vector<Disk>& disks) {
-  const Box& b = frame_.cell;
   const double reach = 2 * frame_.rmax + gap(frame_.rmax, frame_.rmax) + skin_;
-  const bool wrap_x = wrap_.x;
-  const bool wrap_y = wrap_.y;
-  const double margin_x = wrap_x ? 0 : reach;
-  const double margin_y = wrap_y ? 0 : reach;
-  const double x0 = b.xmin - margin_x;
-  const double y0 = b.ymin - margin_y;
-  const double w = b.xmax - b.xmin + 2 * margin_x;
-  const double h = b.ymax - b.ymin + 2 * margin_y;
-  // Cells at least `reach` wide, and at most 4 per disk: a domain whose parts lie far apart covers
-  // little of its box (a square and a speck 1,000 away: a millionth), and cells of `reach` there
-  // would be billions. Larger cells find the same pairs, scanning more disks.
-  const double most = std::max(1024.0, 4.0 * static_cast<double>(disks.size()));
-  const double side = (w / reach) * (h / reach) > most ? std::sqrt(w * h / most) : reach;
-  // Whole cells of at least `side` (the last takes what is left), so that every pair within reach
-  // lies in neighbouring cells. On a periodic axis they tile the period (at least 3 of them, each
-  // still wider than reach: the cell is at least 10 rmax across, reach about 2.5 rmax), so that the
-  // neighbours of a cell wrap onto whole cells.
-  const auto cells = [side](double length, bool wrap) {
-    const auto whole = static_cast<std::size_t>(std::min(length / side, static_cast<double>(kMaxAxisCells)));
-    return std::max<std::size_t>(wrap ? 3 : 1, whole);
-  };
-  const std::size_t nx = cells(w, wrap_x);
-  const std::size_t ny = cells(h, wrap_y);
-  const double inv_x = static_cast<double>(nx) / w;
-  const double inv_y = static_cast<double>(ny) / h;
-  const auto cell_of = [&](const Disk& d) {
-    return cell_index(d.centre.y, y0, inv_y, ny) * nx + cell_index(d.centre.x, x0, inv_x, nx);
-  };
-  // Counting sort of the disks into their cells.
-  cell_start_.assign(nx * ny + 1, 0);
-  for (const Disk& d : disks) {
-    ++cell_start_[cell_of(d) + 1];
-  }
-  for (std::size_t c = 0; c < nx * ny; ++c) {
-    cell_start_[c + 1] += cell_start_[c];
-  }
-  cell_items_.resize(disks.size());
-  cell_fill_.assign(cell_start_.begin(), cell_start_.end() - 1);
-  for (std::uint32_t i = 0; i < disks.size(); ++i) {
-    cell_items_[cell_fill_[cell_of(disks[i])]++] = i;
-  }
+  grid_.build(disks, frame_.cell, wrap_.x, wrap_.y, reach);
   pairs_.clear();
-  for (std::size_t cy = 0; cy < ny; ++cy) {
-    for (std::size_t cx = 0; cx < nx; ++cx) {
-      for (std::uint32_t a = cell_start_[cy * nx + cx]; a < cell_start_[cy * nx + cx + 1]; ++a) {
-        const std::uint32_t i = cell_items_[a];
-        const Disk& di = disks[i];
-        for (int oy = -1; oy <= 1; ++oy) {
-          std::size_t ky = 0;
-          if (!neighbour(cy, oy, ny, wrap_y, ky)) {
+  for (std::size_t c = 0; c < grid_.cells(); ++c) {
+    for (std::uint32_t a = grid_.begin(c); a < grid_.end(c); ++a) {
+      const std::uint32_t i = grid_.item(a);
+      const Disk& di = disks[i];
+      grid_.neighbours(c, [&](std::size_t k) {
+        for (std::uint32_t e = grid_.begin(k); e < grid_.end(k); ++e) {
+          const std::uint32_t j = grid_.item(e);
+          if (j <= i) {
             continue;
           }
-          for (int ox = -1; ox <= 1; ++ox) {
-            std::size_t kx = 0;
-            if (!neighbour(cx, ox, nx, wrap_x, kx)) {
-              continue;
-            }
-            const std::size_t k = ky * nx + kx;
-            for (std::uint32_t e = cell_start_[k]; e < cell_start_[k + 1]; ++e) {
-              const std::uint32_t j = cell_items_[e];
-              if (j <= i) {
-                continue;
-              }
-              double dx = disks[j].centre.x - di.centre.x;
-              double dy = disks[j].centre.y - di.centre.y;
-              wrap_difference(dx, dy);
-              const double g = gap(di.radius, disks[j].radius);
-              const double contact = di.radius + disks[j].radius + g;
-              const double s = contact + skin_;
-              if (dx * dx + dy * dy < s * s) {
-                pairs_.push_back({i, j, contact, g / 2});
-              }
-            }
+          double dx = disks[j].centre.x - di.centre.x;
+          double dy = disks[j].centre.y - di.centre.y;
+          wrap_difference(dx, dy);
+          const double g = gap(di.radius, disks[j].radius);
+          const double contact = di.radius + disks[j].radius + g;
+          const double s = contact + skin_;
+          if (dx * dx + dy * dy < s * s) {
+            pairs_.push_back({i, j, contact, g / 2});
           }
         }
-      }
+      });
     }
   }
   near_wall_.clear();

@@ -17,6 +17,7 @@
 #include "frontpack/domain.hpp"
 #include "frontpack/geometry.hpp"
 #include "generate/periodic_wrap.hpp"
+#include "jam/disk_cells.hpp"
 
 namespace frontpack::detail {
 
@@ -85,9 +86,7 @@ class Relaxation {
   std::vector<Point> force_;
   std::vector<Point> velocity_;
   std::vector<Point> built_at_;
-  std::vector<std::uint32_t> cell_start_;
-  std::vector<std::uint32_t> cell_items_;
-  std::vector<std::uint32_t> cell_fill_;
+  DiskCells grid_;
 };
 
 }  // namespace frontpack::detail

@@ -1,0 +1,122 @@
+// The disks of the jam stage sorted into the cells of a uniform grid, for the neighbour searches of
+// the relaxation (its pair lists) and of the insertion (the clearance of a point). Every disk whose
+// centre lies within `reach` of a point of a cell lies in the 3 x 3 cells around it, wrapped on a
+// periodic axis.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "common/grid_cells.hpp"
+#include "frontpack/geometry.hpp"
+
+namespace frontpack::detail {
+
+class DiskCells {
+ public:
+  /// Sorts `disks` (centres in `cell`, or within reach of it on an axis that does not wrap) into
+  /// cells at least `reach` wide.
+  void build(const std::vector<Disk>& disks, const Box& cell, bool wrap_x, bool wrap_y, double reach) {
+    wrap_x_ = wrap_x;
+    wrap_y_ = wrap_y;
+    const double margin_x = wrap_x ? 0 : reach;
+    const double margin_y = wrap_y ? 0 : reach;
+    x0_ = cell.xmin - margin_x;
+    y0_ = cell.ymin - margin_y;
+    const double w = cell.xmax - cell.xmin + 2 * margin_x;
+    const double h = cell.ymax - cell.ymin + 2 * margin_y;
+    // Cells at least `reach` wide, and at most 4 per disk: a domain whose parts lie far apart covers
+    // little of its box (a square and a speck 1,000 away: a millionth), and cells of `reach` there
+    // would be billions. Larger cells find the same disks, scanning more.
+    const double most = std::max(1024.0, 4.0 * static_cast<double>(disks.size()));
+    const double side = (w / reach) * (h / reach) > most ? std::sqrt(w * h / most) : reach;
+    // Whole cells of at least `side` (the last takes what is left), so that every disk within reach
+    // lies in neighbouring cells. On a periodic axis they tile the period (at least 3 of them, each
+    // still wider than reach: the cell is at least 10 rmax across, reach at most about 2.5 rmax), so
+    // that the neighbours of a cell wrap onto whole cells.
+    const auto cells = [side](double length, bool wrap) {
+      const auto whole = static_cast<std::size_t>(std::min(length / side, static_cast<double>(kMaxAxisCells)));
+      return std::max<std::size_t>(wrap ? 3 : 1, whole);
+    };
+    nx_ = cells(w, wrap_x);
+    ny_ = cells(h, wrap_y);
+    inv_x_ = static_cast<double>(nx_) / w;
+    inv_y_ = static_cast<double>(ny_) / h;
+    // Counting sort of the disks into their cells.
+    start_.assign(nx_ * ny_ + 1, 0);
+    for (const Disk& d : disks) {
+      ++start_[cell_of(d.centre) + 1];
+    }
+    for (std::size_t c = 0; c < nx_ * ny_; ++c) {
+      start_[c + 1] += start_[c];
+    }
+    items_.resize(disks.size());
+    fill_.assign(start_.begin(), start_.end() - 1);
+    for (std::uint32_t i = 0; i < disks.size(); ++i) {
+      items_[fill_[cell_of(disks[i].centre)]++] = i;
+    }
+  }
+
+  [[nodiscard]] std::size_t cells() const noexcept { return nx_ * ny_; }
+  [[nodiscard]] std::size_t cell_of(Point p) const noexcept {
+    return cell_index(p.y, y0_, inv_y_, ny_) * nx_ + cell_index(p.x, x0_, inv_x_, nx_);
+  }
+  /// The disks of cell c: items()[begin(c)] .. items()[end(c) - 1].
+  [[nodiscard]] std::uint32_t begin(std::size_t c) const noexcept { return start_[c]; }
+  [[nodiscard]] std::uint32_t end(std::size_t c) const noexcept { return start_[c + 1]; }
+  [[nodiscard]] std::uint32_t item(std::uint32_t e) const noexcept { return items_[e]; }
+
+  /// Calls visit(k) for each of the 3 x 3 cells k around cell c (c included) that the grid has,
+  /// row by row from below.
+  template <class Visit>
+  void neighbours(std::size_t c, Visit&& visit) const {
+    const std::size_t cx = c % nx_;
+    const std::size_t cy = c / nx_;
+    for (int oy = -1; oy <= 1; ++oy) {
+      std::size_t ky = 0;
+      if (!step(cy, oy, ny_, wrap_y_, ky)) {
+        continue;
+      }
+      for (int ox = -1; ox <= 1; ++ox) {
+        std::size_t kx = 0;
+        if (step(cx, ox, nx_, wrap_x_, kx)) {
+          visit(ky * nx_ + kx);
+        }
+      }
+    }
+  }
+
+ private:
+  // The cell `offset` (-1, 0 or 1) from cell c of an axis of n cells, wrapped on a periodic axis;
+  // false where the grid ends.
+  static bool step(std::size_t c, int offset, std::size_t n, bool wrap, std::size_t& out) noexcept {
+    if (offset < 0 && c == 0) {
+      out = n - 1;
+      return wrap;
+    }
+    if (offset > 0 && c + 1 == n) {
+      out = 0;
+      return wrap;
+    }
+    out = offset < 0 ? c - 1 : offset > 0 ? c + 1 : c;
+    return true;
+  }
+
+  bool wrap_x_ = false;
+  bool wrap_y_ = false;
+  double x0_ = 0;
+  double y0_ = 0;
+  double inv_x_ = 0;
+  double inv_y_ = 0;
+  std::size_t nx_ = 1;
+  std::size_t ny_ = 1;
+  // Reused from build to build: nothing is allocated once the vectors have grown.
+  std::vector<std::uint32_t> start_;
+  std::vector<std::uint32_t> items_;
+  std::vector<std::uint32_t> fill_;
+};
+
+}  // namespace frontpack::detail

@@ -1,0 +1,136 @@
+#include "jam/insertion.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace frontpack::detail {
+
+namespace {
+
+constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
+// At most about this many lattice points over the box, so that their indices fit in 64 bits.
+constexpr double kMostPoints = 0x1p60;
+
+}  // namespace
+
+Insertion::Insertion(const Domain& domain, const EdgeDistanceIndex& walls, Periodicity periodicity, const Box& cell,
+                     double rmin, double rmax, const std::vector<Disk>& disks, Rng& rng)
+    : walls_(walls), cell_(cell), cap_(rmax) {
+  wrap_.x = periodicity != Periodicity::none;
+  wrap_.y = periodicity == Periodicity::xy;
+  wrap_.lx = cell.xmax - cell.xmin;
+  wrap_.ly = cell.ymax - cell.ymin;
+  const double per = kPerDisk * static_cast<double>(std::max<std::size_t>(disks.size(), 1));
+  h_ = std::max({0.5 * rmin, std::sqrt(domain.area() / per), std::sqrt(wrap_.lx * wrap_.ly / kMostPoints)});
+  x0_ = cell.xmin + rng.uniform() * h_;
+  y0_ = cell.ymin + rng.uniform() * h_;
+  nx_ = static_cast<std::uint64_t>(std::max(0.0, (cell.xmax - x0_) / h_)) + 1;
+  const std::uint64_t ny = static_cast<std::uint64_t>(std::max(0.0, (cell.ymax - y0_) / h_)) + 1;
+  // The lattice points within rmax of each disk's edge (a square around it), each once.
+  const auto span = [this](double lo, double hi, double origin, std::uint64_t n, std::uint64_t& a, std::uint64_t& b) {
+    a = static_cast<std::uint64_t>(std::max(0.0, std::ceil((lo - origin) / h_)));
+    b = static_cast<std::uint64_t>(std::clamp(std::floor((hi - origin) / h_), -1.0, static_cast<double>(n) - 1) + 1);
+  };
+  for (const Disk& d : disks) {
+    const double reach = d.radius + rmax;
+    std::uint64_t i0 = 0;
+    std::uint64_t i1 = 0;
+    std::uint64_t j0 = 0;
+    std::uint64_t j1 = 0;
+    span(d.centre.x - reach, d.centre.x + reach, x0_, nx_, i0, i1);
+    span(d.centre.y - reach, d.centre.y + reach, y0_, ny, j0, j1);
+    for (std::uint64_t j = j0; j < j1; ++j) {
+      for (std::uint64_t i = i0; i < i1; ++i) {
+        candidates_.push_back(j * nx_ + i);
+      }
+    }
+  }
+  std::sort(candidates_.begin(), candidates_.end());
+  candidates_.erase(std::unique(candidates_.begin(), candidates_.end()), candidates_.end());
+  // A point at least a spacing from every wall stays on its side of them while insert() moves it
+  // (by less than a spacing).
+  std::erase_if(candidates_, [&](std::uint64_t q) {
+    const Point p = point(q);
+    return !(p.x < cell.xmax && p.y < cell.ymax && walls_.distance(p, h_) >= h_ &&
+             domain.locate(p) == Location::inside);
+  });
+}
+
+double Insertion::clearance(Point p, const std::vector<Disk>& disks) const {
+  double c = walls_.distance(p, cap_);
+  const auto visit = [&](std::size_t i) {
+    const double dx = wrap_.dx(disks[i].centre.x - p.x);
+    const double dy = wrap_.dy(disks[i].centre.y - p.y);
+    c = std::min(c, std::sqrt(dx * dx + dy * dy) - disks[i].radius);
+  };
+  // A disk nearer than cap_ to p has its centre within cap_ + rmax = the grid's reach.
+  grid_.neighbours(grid_.cell_of(p), [&](std::size_t k) {
+    for (std::uint32_t e = grid_.begin(k); e < grid_.end(k); ++e) {
+      visit(grid_.item(e));
+    }
+    for (std::uint32_t e = head_[k]; e != kNone; e = next_[e]) {
+      visit(base_ + e);
+    }
+  });
+  return c;
+}
+
+std::size_t Insertion::insert(std::vector<Disk>& disks, std::size_t count, const RadiusDistribution& radii, Rng& rng) {
+  grid_.build(disks, cell_, wrap_.x, wrap_.y, 2 * cap_);
+  base_ = disks.size();
+  head_.assign(grid_.cells(), kNone);
+  next_.clear();
+  heap_.clear();
+  for (const std::uint64_t q : candidates_) {
+    heap_.emplace_back(clearance(point(q), disks), q);
+  }
+  std::make_heap(heap_.begin(), heap_.end());
+  std::size_t added = 0;
+  while (added < count && !heap_.empty()) {
+    std::pop_heap(heap_.begin(), heap_.end());
+    const auto [was, q] = heap_.back();
+    heap_.pop_back();
+    Point p = point(q);
+    const double now = clearance(p, disks);
+    if (now < was) {
+      // A disk appended this round came near: the point goes back with what is left of its room
+      // (clearances only fall as disks are appended, so the first point popped whose clearance
+      // still holds has the largest).
+      heap_.emplace_back(now, q);
+      std::push_heap(heap_.begin(), heap_.end());
+      continue;
+    }
+    // Climb the clearance within a spacing of the lattice point: steps of h/2, h/4 and h/8 to the
+    // best of the 8 points around.
+    double best = now;
+    for (double step = h_ / 2; step > h_ / 16; step /= 2) {
+      Point pick = p;
+      for (int oy = -1; oy <= 1; ++oy) {
+        for (int ox = -1; ox <= 1; ++ox) {
+          const Point t{p.x + ox * step, p.y + oy * step};
+          const double c = clearance(t, disks);
+          if (c > best) {
+            best = c;
+            pick = t;
+          }
+        }
+      }
+      p = pick;
+    }
+    if (wrap_.x) {  // (into the cell on a periodic axis)
+      p.x = cell_.xmin + wrap_.wrap_x(p.x - cell_.xmin);
+    }
+    if (wrap_.y) {
+      p.y = cell_.ymin + wrap_.wrap_y(p.y - cell_.ymin);
+    }
+    disks.push_back(Disk{p, radii.quantile(rng.uniform())});
+    const std::size_t k = grid_.cell_of(p);
+    next_.push_back(head_[k]);
+    head_[k] = static_cast<std::uint32_t>(next_.size() - 1);
+    ++added;
+  }
+  return added;
+}
+
+}  // namespace frontpack::detail
