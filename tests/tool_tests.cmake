@@ -256,6 +256,15 @@ frontpack_tool_check(stats_voids 0
   ARGS stats ${SQ} ${TD}/good.csv --hole-radius 0.1 --hole-radius 0.3 --json ${O}/s.json)
 frontpack_tool_check(stats_bad_hole_radius 5 "--hole-radius '-1': expected a finite number > 0"
   ARGS stats ${SQ} ${TD}/good.csv --hole-radius=-1)
+# stats --contact-gap: two disks 2^-20 apart touch for a gap of 2^-19, not for the default 1e-9 rmax.
+frontpack_tool_check(stats_contact_gap_default 0 " 0 contacts, 0 wall contacts, 2 rattlers \\(gap <= 1\\.25e-10 "
+  ARGS stats ${SQ} ${TD}/near_contact.csv)
+set(O ${TOOL_OUT}/stats_contact_gap)
+frontpack_tool_check(stats_contact_gap 0 " 1 contacts, 0 wall contacts, 2 rattlers \\(gap <= 1\\.90734863[0-9]*e-06 "
+  FILES ${O}/s.json JSON ${O}/s.json "contacts=^1$" "contact_gap=^1\\.9073486328125e-06$"
+  ARGS stats ${SQ} ${TD}/near_contact.csv --contact-gap 1.9073486328125e-06 --json ${O}/s.json)
+frontpack_tool_check(stats_bad_contact_gap 5 "--contact-gap '0': expected a finite number > 0"
+  ARGS stats ${SQ} ${TD}/near_contact.csv --contact-gap 0)
 frontpack_tool_check(stats_malformed 7 "malformed_line\\.csv:4:" ARGS stats ${SQ} ${TD}/malformed_line.csv)
 
 # stats --periodic: a periodic fill (the closed form) measured as a torus. No walls, so no band

@@ -31,11 +31,12 @@ struct StatsArgs {
   std::string json;
   std::string samples = "1000000";
   std::vector<std::string> hole_radii;
+  std::string contact_gap;
   bool quiet = false;
 };
 
-// A radius for OPTION: one decimal number (C locale, read with correct rounding), finite and > 0.
-double parse_radius(const char* option, const std::string& text) {
+// A length for OPTION: one decimal number (C locale, read with correct rounding), finite and > 0.
+double parse_length(const char* option, const std::string& text) {
   double value = 0;
   const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
   if (ec != std::errc{} || end != text.data() + text.size() || !std::isfinite(value) || !(value > 0)) {
@@ -55,7 +56,10 @@ int run_stats(StatsArgs& a) {
   }
   options.samples = parse_count("--samples", a.samples, std::uint64_t{1} << 40);
   for (const std::string& r : a.hole_radii) {
-    options.hole_radii.push_back(parse_radius("--hole-radius", r));
+    options.hole_radii.push_back(parse_length("--hole-radius", r));
+  }
+  if (!a.contact_gap.empty()) {
+    options.contact_gap = parse_length("--contact-gap", a.contact_gap);
   }
   options.stop = stop_token();
   frontpack_tool::check_files(inputs, output_uses({}, a.json));
@@ -111,6 +115,9 @@ Command add_stats(CLI::App& app) {
   cmd->add_option("--hole-radius", args->hole_radii,
                   "count the holes that take a disk of this radius (repeatable; default: the median radius by number "
                   "and the largest)");
+  cmd->add_option("--contact-gap", args->contact_gap,
+                  "the largest gap between two disks, or a disk and a wall, that counts as a contact (default: 1e-9 "
+                  "of the largest radius)");
   cmd->add_option("--json", args->json, "write the statistics as JSON to this file");
   cmd->add_flag("-q,--quiet", args->quiet, "print nothing but errors");
   cmd->footer(
