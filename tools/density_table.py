@@ -14,6 +14,7 @@ default), from the shape's area as `frontpack info` prints it; the spec used is 
     python3 tools/density_table.py --out table.md        # ... into a file
     python3 tools/density_table.py --methods boundary    # one method's rows only
     python3 tools/density_table.py --pictures            # docs/img/density-{closed,open,boundary}.png
+    python3 tools/density_table.py --sizes --contact-gaps 1e-7 1e-5   # issue #29's table, rattlers at these gaps too
 
 Python 3 standard library only. docs/density.md explains the measures and reads the table.
 """
@@ -235,9 +236,18 @@ def size_specs(area, disks):
     return specs
 
 
-def quality_run(tool, shape_path, method, spec, seed, workdir):
+def rattlers_at(tool, shape_path, csv, gap, workdir):
+    """The share of rattlers (fewer than 3 contacts) when a gap up to `gap` counts as a contact."""
+    js = os.path.join(workdir, "stats.json")
+    run([tool, "stats", shape_path, csv, "--contact-gap", repr(gap), "--samples", "1000", "--json", js, "-q"])
+    with open(js) as f:
+        j = json.load(f)
+    return j["rattlers"] / max(j["disks"], 1)
+
+
+def quality_run(tool, shape_path, method, spec, seed, workdir, contact_gaps=()):
     d = tempfile.mkdtemp(dir=workdir)
-    j, _ = fill(tool, shape_path, method, spec, seed, d, extra=("--holes",))
+    j, csv = fill(tool, shape_path, method, spec, seed, d, extra=("--holes",))
     disks = max(j["disks"], 1)
     rmax = j["radius"]["max"]
     interior = j["interior_fraction"]
@@ -251,14 +261,16 @@ def quality_run(tool, shape_path, method, spec, seed, workdir):
         "seg": j["segregation_ks_by_area"], "ks": j["radius"]["ks_by_area"],
         "us_per_disk": 1e6 * (j["seconds"]["front"] + j["seconds"].get("jam", 0)) / disks,
         "culled": j["certificate"]["culled"],
+        **{"rattlers@%g" % g: rattlers_at(tool, shape_path, csv, g * rmax, d) for g in contact_gaps},
     }
 
 
-def quality_table(tool, shapes, disks, methods, jobs, log, labels=None, seeds=SEEDS):
+def quality_table(tool, shapes, disks, methods, jobs, log, labels=None, seeds=SEEDS, contact_gaps=()):
     import concurrent.futures
+    gaps = "".join(" rattlers, gap %g rmax |" % g for g in contact_gaps)
     lines = [
-        "| shape | radii | method | disks | interior | band | largest empty circle / rmax (max) | holes taking a median disk, % of disks | profile 1-6 rmax, worst - interior | cell coverage, 1st percentile | rattlers | segregation KS | KS by area | culled | front µs/disk |",
-        "|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|",
+        "| shape | radii | method | disks | interior | band | largest empty circle / rmax (max) | holes taking a median disk, % of disks | profile 1-6 rmax, worst - interior | cell coverage, 1st percentile | rattlers | segregation KS | KS by area | culled | front µs/disk |" + gaps,
+        "|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|" + "---:|" * len(contact_gaps),
     ]
     specs_of = {}
     with tempfile.TemporaryDirectory(prefix="quality_table_") as workdir:
@@ -271,7 +283,7 @@ def quality_table(tool, shapes, disks, methods, jobs, log, labels=None, seeds=SE
                     for seed in seeds:
                         work.append((shape, label, method, seed, path, spec))
         with concurrent.futures.ThreadPoolExecutor(max_workers=jobs) as ex:
-            runs = list(ex.map(lambda w: quality_run(tool, w[4], w[2], w[5], w[3], workdir), work))
+            runs = list(ex.map(lambda w: quality_run(tool, w[4], w[2], w[5], w[3], workdir, contact_gaps), work))
         rows = {}
         for w, m in zip(work, runs):
             rows.setdefault(w[:3], []).append(m)
@@ -286,7 +298,8 @@ def quality_table(tool, shapes, disks, methods, jobs, log, labels=None, seeds=SE
                         "| %s | %s | %s | %.0f | %.4f | %.4f | %.2f | %.3f | %+.3f | %.3f | %.3f | %.3f | %.4f | %.0f | %.2f |"
                         % (shape.removesuffix(".wkt"), label, method, mean["disks"], mean["interior"], mean["band"], lec,
                            mean["holes"], mean["profile"], mean["cell_p1"], mean["rattlers"], mean["seg"], mean["ks"],
-                           mean["culled"], mean["us_per_disk"]))
+                           mean["culled"], mean["us_per_disk"])
+                        + "".join(" %.3f |" % mean["rattlers@%g" % g] for g in contact_gaps))
     specs = "\n".join("- %s: `%s`" % (label, spec) for label, spec in specs_of[shapes[0]])
     return "\n".join(lines) + "\n\nRadius specs on %s (scaled by the square root of the area on the other shapes):\n\n%s\n" % (
         shapes[0].removesuffix(".wkt"), specs)
@@ -369,6 +382,8 @@ def main():
     ap.add_argument("--quality-pictures", metavar="LABEL",
                     help="write docs/img/quality-{bidisperse,seam}-LABEL.png with --frontpack and no table "
                     "(the bidisperse plate and the centre of a 10 x 10 square at rmax / rmin = 10)")
+    ap.add_argument("--contact-gaps", nargs="*", type=float, default=[],
+                    help="--sizes: also the share of rattlers when a gap up to each of these (in rmax) counts as a contact")
     ap.add_argument("--jobs", type=int, default=2, help="runs at a time for --sizes (default 2)")
     ap.add_argument("-q", "--quiet", action="store_true", help="no progress lines on stderr")
     args = ap.parse_args()
@@ -391,7 +406,7 @@ def main():
     t0 = time.monotonic()
     if args.sizes:
         text = quality_table(tool, args.shapes or list(QUALITY_SHAPES), args.disks, args.methods, args.jobs, log,
-                             args.specs, tuple(args.seeds))
+                             args.specs, tuple(args.seeds), tuple(args.contact_gaps))
     else:
         text = table(tool, args.shapes or concave_shapes(), args.disks, args.methods, log)
     log("total %.0f s" % (time.monotonic() - t0))
