@@ -27,34 +27,62 @@ Insertion::Insertion(const Domain& domain, const EdgeDistanceIndex& walls, Perio
   y0_ = cell.ymin + rng.uniform() * h_;
   nx_ = static_cast<std::uint64_t>(std::max(0.0, (cell.xmax - x0_) / h_)) + 1;
   const std::uint64_t ny = static_cast<std::uint64_t>(std::max(0.0, (cell.ymax - y0_) / h_)) + 1;
-  // The lattice points within rmax of each disk's edge (a square around it), each once.
-  const auto span = [this](double lo, double hi, double origin, std::uint64_t n, std::uint64_t& a, std::uint64_t& b) {
-    a = static_cast<std::uint64_t>(std::max(0.0, std::ceil((lo - origin) / h_)));
-    b = static_cast<std::uint64_t>(std::clamp(std::floor((hi - origin) / h_), -1.0, static_cast<double>(n) - 1) + 1);
+  // The lattice points within rmax of each disk's edge (in a square around it), row by row: the
+  // disks whose squares span a row give it intervals of columns, merged so that each point is
+  // tested once. Memory: the disks spanning a row and the points kept.
+  const auto span = [this](double lo, double hi, double origin, std::uint64_t n) {
+    const auto a = static_cast<std::uint64_t>(std::clamp(std::ceil((lo - origin) / h_), 0.0, static_cast<double>(n)));
+    const auto b =
+        static_cast<std::uint64_t>(std::clamp(std::floor((hi - origin) / h_) + 1, 0.0, static_cast<double>(n)));
+    return std::pair{a, std::max(a, b)};
   };
-  for (const Disk& d : disks) {
-    const double reach = d.radius + rmax;
-    std::uint64_t i0 = 0;
-    std::uint64_t i1 = 0;
-    std::uint64_t j0 = 0;
-    std::uint64_t j1 = 0;
-    span(d.centre.x - reach, d.centre.x + reach, x0_, nx_, i0, i1);
-    span(d.centre.y - reach, d.centre.y + reach, y0_, ny, j0, j1);
-    for (std::uint64_t j = j0; j < j1; ++j) {
-      for (std::uint64_t i = i0; i < i1; ++i) {
-        candidates_.push_back(j * nx_ + i);
+  std::vector<std::uint32_t> order(disks.size());
+  std::vector<std::pair<std::uint64_t, std::uint64_t>> rows(disks.size());  // per disk: the rows its square spans
+  for (std::uint32_t i = 0; i < disks.size(); ++i) {
+    order[i] = i;
+    rows[i] = span(disks[i].centre.y - disks[i].radius - rmax, disks[i].centre.y + disks[i].radius + rmax, y0_, ny);
+  }
+  std::sort(order.begin(), order.end(),
+            [&](std::uint32_t p, std::uint32_t q) { return rows[p].first < rows[q].first; });
+  std::vector<std::uint32_t> active;
+  std::vector<std::pair<std::uint64_t, std::uint64_t>> columns;
+  std::size_t next = 0;
+  for (std::uint64_t j = 0; j < ny;) {
+    if (active.empty()) {
+      if (next == order.size()) {
+        break;
+      }
+      j = std::max(j, rows[order[next]].first);  // (skip the rows no disk spans)
+      if (j >= ny) {
+        break;
       }
     }
+    while (next < order.size() && rows[order[next]].first <= j) {
+      active.push_back(order[next++]);
+    }
+    std::erase_if(active, [&](std::uint32_t i) { return rows[i].second <= j; });
+    columns.clear();
+    for (const std::uint32_t i : active) {
+      const double reach = disks[i].radius + rmax;
+      columns.push_back(span(disks[i].centre.x - reach, disks[i].centre.x + reach, x0_, nx_));
+    }
+    std::sort(columns.begin(), columns.end());
+    std::uint64_t done = 0;  // the columns of this row tested so far
+    for (const auto& [c0, c1] : columns) {
+      for (std::uint64_t i = std::max(c0, done); i < c1; ++i) {
+        // A point at least a spacing from every wall stays on its side of them while insert()
+        // moves it (by less than a spacing).
+        const std::uint64_t q = j * nx_ + i;
+        const Point p = point(q);
+        if (p.x < cell.xmax && p.y < cell.ymax && walls_.distance(p, h_) >= h_ &&
+            domain.locate(p) == Location::inside) {
+          candidates_.push_back(q);
+        }
+      }
+      done = std::max(done, c1);
+    }
+    ++j;
   }
-  std::sort(candidates_.begin(), candidates_.end());
-  candidates_.erase(std::unique(candidates_.begin(), candidates_.end()), candidates_.end());
-  // A point at least a spacing from every wall stays on its side of them while insert() moves it
-  // (by less than a spacing).
-  std::erase_if(candidates_, [&](std::uint64_t q) {
-    const Point p = point(q);
-    return !(p.x < cell.xmax && p.y < cell.ymax && walls_.distance(p, h_) >= h_ &&
-             domain.locate(p) == Location::inside);
-  });
 }
 
 double Insertion::clearance(Point p, const std::vector<Disk>& disks) const {
