@@ -25,6 +25,10 @@ Insertion::Insertion(const Domain& domain, const EdgeDistanceIndex& walls, Perio
   h_ = std::max({0.5 * rmin, std::sqrt(domain.area() / per), std::sqrt(wrap_.lx * wrap_.ly / kMostPoints)});
   x0_ = cell.xmin + rng.uniform() * h_;
   y0_ = cell.ymin + rng.uniform() * h_;
+  if (!(std::isfinite(x0_) && std::isfinite(y0_) && std::isfinite(cell.xmax) && std::isfinite(cell.ymax) &&
+        std::isfinite(h_))) {
+    return;  // a box beyond the doubles' range: no candidate, so the stage inserts nothing
+  }
   nx_ = static_cast<std::uint64_t>(std::max(0.0, (cell.xmax - x0_) / h_)) + 1;
   const std::uint64_t ny = static_cast<std::uint64_t>(std::max(0.0, (cell.ymax - y0_) / h_)) + 1;
   // The lattice points within rmax of each disk's edge (in a square around it), row by row: the
