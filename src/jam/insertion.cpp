@@ -133,14 +133,21 @@ std::size_t Insertion::insert(std::vector<Disk>& disks, std::size_t count, const
       std::push_heap(heap_.begin(), heap_.end());
       continue;
     }
-    // Climb the clearance within a spacing of the lattice point: steps of h/2, h/4 and h/8 to the
-    // best of the 8 points around.
+    // Climb the clearance: steps of h/2, h/4 and h/8 to the best of the 8 points around, each
+    // point less than a spacing from the lattice point (which lies at least a spacing from every
+    // wall), so that the disk's centre stays on the lattice point's side of every wall.
+    const Point start = p;
     double best = now;
     for (double step = h_ / 2; step > h_ / 16; step /= 2) {
       Point pick = p;
       for (int oy = -1; oy <= 1; ++oy) {
         for (int ox = -1; ox <= 1; ++ox) {
           const Point t{p.x + ox * step, p.y + oy * step};
+          const double mx = t.x - start.x;
+          const double my = t.y - start.y;
+          if (!(mx * mx + my * my < h_ * h_)) {
+            continue;
+          }
           const double c = clearance(t, disks);
           if (c > best) {
             best = c;
