@@ -18,7 +18,7 @@ namespace frontpack::detail {
 class DiskCells {
  public:
   /// Sorts `disks` (centres in `cell`, or within reach of it on an axis that does not wrap) into
-  /// cells at least `reach` wide.
+  /// cells at least `reach` wide. Disks are indexed in 32 bits: fewer than 2^32 of them.
   void build(const std::vector<Disk>& disks, const Box& cell, bool wrap_x, bool wrap_y, double reach) {
     wrap_x_ = wrap_x;
     wrap_y_ = wrap_y;
@@ -31,14 +31,22 @@ class DiskCells {
     // Cells at least `reach` wide, and at most 4 per disk: a domain whose parts lie far apart covers
     // little of its box (a square and a speck 1,000 away: a millionth), and cells of `reach` there
     // would be billions. Larger cells find the same disks, scanning more.
+    // (w * h may overflow where w and h do not: then the root of each.)
     const double most = std::max(1024.0, 4.0 * static_cast<double>(disks.size()));
-    const double side = (w / reach) * (h / reach) > most ? std::sqrt(w * h / most) : reach;
+    const double area = w * h;
+    const double side = !((w / reach) * (h / reach) > most) ? reach
+                        : std::isfinite(area)               ? std::sqrt(area / most)
+                                                            : std::sqrt(w / most) * std::sqrt(h);
     // Whole cells of at least `side` (the last takes what is left), so that every disk within reach
     // lies in neighbouring cells. On a periodic axis they tile the period (at least 3 of them, each
     // still wider than reach: the cell is at least 10 rmax across, reach at most about 2.5 rmax), so
     // that the neighbours of a cell wrap onto whole cells.
+    // (A NaN ratio, from lengths beyond the doubles: one cell, which finds every disk.)
     const auto cells = [side](double length, bool wrap) {
-      const auto whole = static_cast<std::size_t>(std::min(length / side, static_cast<double>(kMaxAxisCells)));
+      const double g = length / side;
+      const std::size_t whole = g >= 1 && g < static_cast<double>(kMaxAxisCells) ? static_cast<std::size_t>(g)
+                                : g >= 1                                         ? kMaxAxisCells
+                                                                                 : 0;
       return std::max<std::size_t>(wrap ? 3 : 1, whole);
     };
     nx_ = cells(w, wrap_x);

@@ -9,8 +9,9 @@ namespace frontpack::detail {
 namespace {
 
 constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
-// At most about this many lattice points over the box, so that their indices fit in 64 bits.
-constexpr double kMostPoints = 0x1p60;
+// At most this many lattice rows or columns over the box, so that their indices convert to 64-bit
+// integers exactly (only the rows and columns near a disk are visited).
+constexpr double kMostAxisPoints = 0x1p62;
 
 }  // namespace
 
@@ -22,15 +23,18 @@ Insertion::Insertion(const Domain& domain, const EdgeDistanceIndex& walls, Perio
   wrap_.lx = cell.xmax - cell.xmin;
   wrap_.ly = cell.ymax - cell.ymin;
   const double per = kPerDisk * static_cast<double>(std::max<std::size_t>(disks.size(), 1));
-  h_ = std::max({0.5 * rmin, std::sqrt(domain.area() / per), std::sqrt(wrap_.lx * wrap_.ly / kMostPoints)});
-  x0_ = cell.xmin + rng.uniform() * h_;
-  y0_ = cell.ymin + rng.uniform() * h_;
-  if (!(std::isfinite(x0_) && std::isfinite(y0_) && std::isfinite(cell.xmax) && std::isfinite(cell.ymax) &&
-        std::isfinite(h_))) {
-    return;  // a box beyond the doubles' range: no candidate, so the stage inserts nothing
+  // The spacing from the packing's own scale (the domain's area per point, or rmin / 2), not from
+  // the box: a domain whose parts lie far apart keeps a lattice fine enough for its disks.
+  h_ = std::max(0.5 * rmin, std::sqrt(domain.area() / per));
+  const double x0 = cell.xmin + rng.uniform() * h_;
+  const double y0 = cell.ymin + rng.uniform() * h_;
+  const double gx = (cell.xmax - x0) / h_;
+  const double gy = (cell.ymax - y0) / h_;
+  if (!(gx < kMostAxisPoints && gy < kMostAxisPoints && std::isfinite(x0) && std::isfinite(y0))) {
+    return;  // a box beyond the doubles' range or 2^62 spacings: no candidate, the stage inserts nothing
   }
-  nx_ = static_cast<std::uint64_t>(std::max(0.0, (cell.xmax - x0_) / h_)) + 1;
-  const std::uint64_t ny = static_cast<std::uint64_t>(std::max(0.0, (cell.ymax - y0_) / h_)) + 1;
+  const std::uint64_t nx = static_cast<std::uint64_t>(std::max(0.0, gx)) + 1;
+  const std::uint64_t ny = static_cast<std::uint64_t>(std::max(0.0, gy)) + 1;
   // The lattice points within rmax of each disk's edge (in a square around it), row by row: the
   // disks whose squares span a row give it intervals of columns, merged so that each point is
   // tested once. Memory: the disks spanning a row and the points kept.
@@ -44,7 +48,7 @@ Insertion::Insertion(const Domain& domain, const EdgeDistanceIndex& walls, Perio
   std::vector<std::pair<std::uint64_t, std::uint64_t>> rows(disks.size());  // per disk: the rows its square spans
   for (std::uint32_t i = 0; i < disks.size(); ++i) {
     order[i] = i;
-    rows[i] = span(disks[i].centre.y - disks[i].radius - rmax, disks[i].centre.y + disks[i].radius + rmax, y0_, ny);
+    rows[i] = span(disks[i].centre.y - disks[i].radius - rmax, disks[i].centre.y + disks[i].radius + rmax, y0, ny);
   }
   std::sort(order.begin(), order.end(),
             [&](std::uint32_t p, std::uint32_t q) { return rows[p].first < rows[q].first; });
@@ -68,7 +72,7 @@ Insertion::Insertion(const Domain& domain, const EdgeDistanceIndex& walls, Perio
     columns.clear();
     for (const std::uint32_t i : active) {
       const double reach = disks[i].radius + rmax;
-      columns.push_back(span(disks[i].centre.x - reach, disks[i].centre.x + reach, x0_, nx_));
+      columns.push_back(span(disks[i].centre.x - reach, disks[i].centre.x + reach, x0, nx));
     }
     std::sort(columns.begin(), columns.end());
     std::uint64_t done = 0;  // the columns of this row tested so far
@@ -76,17 +80,26 @@ Insertion::Insertion(const Domain& domain, const EdgeDistanceIndex& walls, Perio
       for (std::uint64_t i = std::max(c0, done); i < c1; ++i) {
         // A point at least a spacing from every wall stays on its side of them while insert()
         // moves it (by less than a spacing).
-        const std::uint64_t q = j * nx_ + i;
-        const Point p = point(q);
+        const Point p{x0 + h_ * static_cast<double>(i), y0 + h_ * static_cast<double>(j)};
         if (p.x < cell.xmax && p.y < cell.ymax && walls_.distance(p, h_) >= h_ &&
             domain.locate(p) == Location::inside) {
-          candidates_.push_back(q);
+          candidates_.push_back(p);
         }
       }
       done = std::max(done, c1);
     }
     ++j;
   }
+}
+
+Point Insertion::wrapped(Point p) const noexcept {
+  if (wrap_.x) {
+    p.x = cell_.xmin + wrap_.wrap_x(p.x - cell_.xmin);
+  }
+  if (wrap_.y) {
+    p.y = cell_.ymin + wrap_.wrap_y(p.y - cell_.ymin);
+  }
+  return p;
 }
 
 double Insertion::clearance(Point p, const std::vector<Disk>& disks) const {
@@ -114,8 +127,8 @@ std::size_t Insertion::insert(std::vector<Disk>& disks, std::size_t count, const
   head_.assign(grid_.cells(), kNone);
   next_.clear();
   heap_.clear();
-  for (const std::uint64_t q : candidates_) {
-    heap_.emplace_back(clearance(point(q), disks), q);
+  for (std::size_t e = 0; e < candidates_.size(); ++e) {
+    heap_.emplace_back(clearance(candidates_[e], disks), e);
   }
   std::make_heap(heap_.begin(), heap_.end());
   std::size_t added = 0;
@@ -123,7 +136,7 @@ std::size_t Insertion::insert(std::vector<Disk>& disks, std::size_t count, const
     std::pop_heap(heap_.begin(), heap_.end());
     const auto [was, q] = heap_.back();
     heap_.pop_back();
-    Point p = point(q);
+    Point p = candidates_[q];
     const double now = clearance(p, disks);
     if (now < was) {
       // A disk appended this round came near: the point goes back with what is left of its room
@@ -135,7 +148,9 @@ std::size_t Insertion::insert(std::vector<Disk>& disks, std::size_t count, const
     }
     // Climb the clearance: steps of h/2, h/4 and h/8 to the best of the 8 points around, each
     // point less than a spacing from the lattice point (which lies at least a spacing from every
-    // wall), so that the disk's centre stays on the lattice point's side of every wall.
+    // wall), so that the disk's centre stays on the lattice point's side of every wall. A point
+    // beyond a periodic side is measured at its image in the cell, where the grid has its
+    // neighbours.
     const Point start = p;
     double best = now;
     for (double step = h_ / 2; step > h_ / 16; step /= 2) {
@@ -145,10 +160,10 @@ std::size_t Insertion::insert(std::vector<Disk>& disks, std::size_t count, const
           const Point t{p.x + ox * step, p.y + oy * step};
           const double mx = t.x - start.x;
           const double my = t.y - start.y;
-          if (!(mx * mx + my * my < h_ * h_)) {
-            continue;
+          if ((ox == 0 && oy == 0) || !(mx * mx + my * my < h_ * h_)) {
+            continue;  // (p itself has clearance best)
           }
-          const double c = clearance(t, disks);
+          const double c = clearance(wrapped(t), disks);
           if (c > best) {
             best = c;
             pick = t;
@@ -157,12 +172,7 @@ std::size_t Insertion::insert(std::vector<Disk>& disks, std::size_t count, const
       }
       p = pick;
     }
-    if (wrap_.x) {  // (into the cell on a periodic axis)
-      p.x = cell_.xmin + wrap_.wrap_x(p.x - cell_.xmin);
-    }
-    if (wrap_.y) {
-      p.y = cell_.ymin + wrap_.wrap_y(p.y - cell_.ymin);
-    }
+    p = wrapped(p);
     disks.push_back(Disk{p, radii.quantile(rng.uniform())});
     const std::size_t k = grid_.cell_of(p);
     next_.push_back(head_[k]);

@@ -44,9 +44,8 @@ class Insertion {
   [[nodiscard]] double spacing() const noexcept { return h_; }
 
  private:
-  [[nodiscard]] Point point(std::uint64_t q) const noexcept {
-    return Point{x0_ + h_ * static_cast<double>(q % nx_), y0_ + h_ * static_cast<double>(q / nx_)};
-  }
+  // p moved into the cell on a periodic axis (PeriodicWrap's wrap, in the cell's coordinates).
+  [[nodiscard]] Point wrapped(Point p) const noexcept;
   // min(rmax, the distance from p to the nearest disk's edge (negative inside a disk) or wall).
   [[nodiscard]] double clearance(Point p, const std::vector<Disk>& disks) const;
 
@@ -54,18 +53,15 @@ class Insertion {
   PeriodicWrap wrap_;
   Box cell_;
   double cap_ = 0;
-  double h_ = 0;  // the lattice's spacing and origin
-  double x0_ = 0;
-  double y0_ = 0;
-  std::uint64_t nx_ = 1;
-  std::vector<std::uint64_t> candidates_;  // the lattice points kept, by index
+  double h_ = 0;                   // the lattice's spacing
+  std::vector<Point> candidates_;  // the lattice points kept, row by row from below
   // The disks there before the round, by cell; those appended during it chained into the same
   // cells (head_ per cell, next_ per disk appended).
   DiskCells grid_;
   std::size_t base_ = 0;
   std::vector<std::uint32_t> head_;
   std::vector<std::uint32_t> next_;
-  std::vector<std::pair<double, std::uint64_t>> heap_;  // (clearance, lattice index)
+  std::vector<std::pair<double, std::size_t>> heap_;  // (clearance, index in candidates_)
 };
 
 }  // namespace frontpack::detail

@@ -63,11 +63,12 @@ struct Stage {
 TEST(JamInsertion, FillsTheHolesLargestFirst) {
   // Two holes: one disk missing at lattice index 210 (inside), two side by side at 85 and 86 (a
   // larger hole). The first disk goes into the larger hole, the second into the other, each
-  // within an eighth of a spacing of the hole's centre (the climb's last step).
+  // within a quarter of a spacing of the hole's centre (the climb's last steps are h/4 and h/8).
+  // Clearances are capped at rmax: 2 kR here, so that the larger hole's shows.
   const Stage s(fp::Domain::from_wkt("POLYGON((0 0,1 0,1 1,0 1,0 0))"));
   std::vector<fp::Disk> disks = lattice_without({210, 85, 86});
   Rng rng(7);
-  Insertion insertion = s.insertion(disks, rng);
+  Insertion insertion = s.insertion(disks, rng, 2 * kR);
   const fp::Radii radii = fp::Radii::constant(kR);
   const std::size_t before = disks.size();
   ASSERT_EQ(insertion.insert(disks, 2, radii.distribution(), rng), 2U);
@@ -81,22 +82,41 @@ TEST(JamInsertion, FillsTheHolesLargestFirst) {
 }
 
 TEST(JamInsertion, EachHoleTakesOneDiskOfARound) {
-  // Three single holes and a round of three: one disk in each (the disks appended earlier in the
-  // round count), not two in the first.
+  // The hole of two missing disks (85 and 86) has the most room, 1.236 kR midway, and its lattice
+  // points the largest clearances before the round (every other point lies in a gap of four
+  // touching disks, with at most 0.414 kR). A round of two: the first disk goes in midway; the
+  // second, with the first counted, where a point is clear of it (farther than kR from its
+  // centre). Were the disks appended in the round not counted, the second would go into the same
+  // hole, less than a spacing (0.71 kR) from the first.
   const Stage s(fp::Domain::from_wkt("POLYGON((0 0,1 0,1 1,0 1,0 0))"));
-  const std::vector<std::size_t> holes{44, 210, 333};
-  std::vector<fp::Disk> disks = lattice_without(holes);
-  Rng rng(3);
-  Insertion insertion = s.insertion(disks, rng);
-  const std::size_t before = disks.size();
-  ASSERT_EQ(insertion.insert(disks, 3, fp::Radii::constant(kR).distribution(), rng), 3U);
-  for (const std::size_t q : holes) {
-    std::size_t in = 0;
-    for (std::size_t i = before; i < disks.size(); ++i) {
-      in += distance(disks[i].centre, lattice_centre(q)) < kR ? 1U : 0U;
-    }
-    EXPECT_EQ(in, 1U) << "hole " << q;
+  std::vector<fp::Disk> disks = lattice_without({85, 86});
+  for (const std::uint64_t seed : {1U, 2U, 3U, 4U, 5U}) {
+    std::vector<fp::Disk> trial = disks;
+    Rng rng(seed);
+    Insertion insertion = s.insertion(trial, rng, 2 * kR);
+    ASSERT_EQ(insertion.insert(trial, 2, fp::Radii::constant(kR).distribution(), rng), 2U);
+    const fp::Disk& first = trial[disks.size()];
+    const fp::Disk& second = trial[disks.size() + 1];
+    const fp::Point mid{(lattice_centre(85).x + lattice_centre(86).x) / 2, lattice_centre(85).y};
+    EXPECT_LE(distance(first.centre, mid), insertion.spacing() / 4) << "seed " << seed;
+    EXPECT_GT(distance(second.centre, first.centre), kR) << "seed " << seed;
   }
+}
+
+TEST(JamInsertion, APartFarAwayLeavesTheLatticeFine) {
+  // The lattice's square and a speck of a domain 1e9 away: the lattice's spacing follows the
+  // disks' scale, not the box's (whose area over 2^60 points would give a spacing of about 0.9),
+  // so the hole in the square takes the disk.
+  const Stage s(
+      fp::Domain::from_wkt("MULTIPOLYGON(((0 0,1 0,1 1,0 1,0 0)),((1000000000 1000000000,1000000000.5 1000000000,"
+                           "1000000000.5 1000000000.5,1000000000 1000000000.5,1000000000 1000000000)))"));
+  std::vector<fp::Disk> disks = lattice_without({210});
+  Rng rng(9);
+  Insertion insertion = s.insertion(disks, rng);
+  EXPECT_LE(insertion.spacing(), kR);
+  const std::size_t before = disks.size();
+  ASSERT_EQ(insertion.insert(disks, 1, fp::Radii::constant(kR).distribution(), rng), 1U);
+  EXPECT_LE(distance(disks[before].centre, lattice_centre(210)), insertion.spacing() / 4);
 }
 
 TEST(JamInsertion, FindsAHoleAcrossAPeriodicSide) {
