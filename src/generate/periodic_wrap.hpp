@@ -37,6 +37,19 @@ struct PeriodicWrap {
   [[nodiscard]] double wrap_x(double v) const noexcept { return x ? into(v, lx) : v; }
   [[nodiscard]] double wrap_y(double v) const noexcept { return y ? into(v, ly) : v; }
 
+  /// A point within a period of `cell` (the cell in the caller's coordinates, whose sides are
+  /// lx and ly apart) brought into it on each periodic axis; a coordinate already in the cell stays
+  /// as it is, bit for bit.
+  [[nodiscard]] Point into_cell(Point p, const Box& cell) const noexcept {
+    if (x && (p.x < cell.xmin || p.x >= cell.xmax)) {
+      p.x = cell.xmin + into(p.x - cell.xmin, lx);
+    }
+    if (y && (p.y < cell.ymin || p.y >= cell.ymax)) {
+      p.y = cell.ymin + into(p.y - cell.ymin, ly);
+    }
+    return p;
+  }
+
   /// The shifts (multiples of the periods, not (0, 0)) of the images a disk centred at (px, py)
   /// in the cell needs: those within `reach` of the cell. Returns how many it wrote.
   std::size_t image_shifts(double px, double py, double reach,

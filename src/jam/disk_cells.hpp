@@ -44,9 +44,7 @@ class DiskCells {
     // (A NaN ratio, from lengths beyond the doubles: one cell, which finds every disk.)
     const auto cells = [side](double length, bool wrap) {
       const double g = length / side;
-      const std::size_t whole = g >= 1 && g < static_cast<double>(kMaxAxisCells) ? static_cast<std::size_t>(g)
-                                : g >= 1                                         ? kMaxAxisCells
-                                                                                 : 0;
+      const std::size_t whole = g >= 1 ? static_cast<std::size_t>(std::min(g, static_cast<double>(kMaxAxisCells))) : 0;
       return std::max<std::size_t>(wrap ? 3 : 1, whole);
     };
     nx_ = cells(w, wrap_x);

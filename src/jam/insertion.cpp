@@ -92,16 +92,6 @@ Insertion::Insertion(const Domain& domain, const EdgeDistanceIndex& walls, Perio
   }
 }
 
-Point Insertion::wrapped(Point p) const noexcept {
-  if (wrap_.x) {
-    p.x = cell_.xmin + wrap_.wrap_x(p.x - cell_.xmin);
-  }
-  if (wrap_.y) {
-    p.y = cell_.ymin + wrap_.wrap_y(p.y - cell_.ymin);
-  }
-  return p;
-}
-
 double Insertion::clearance(Point p, const std::vector<Disk>& disks) const {
   double c = walls_.distance(p, cap_);
   const auto visit = [&](std::size_t i) {
@@ -163,7 +153,7 @@ std::size_t Insertion::insert(std::vector<Disk>& disks, std::size_t count, const
           if ((ox == 0 && oy == 0) || !(mx * mx + my * my < h_ * h_)) {
             continue;  // (p itself has clearance best)
           }
-          const double c = clearance(wrapped(t), disks);
+          const double c = clearance(wrap_.into_cell(t, cell_), disks);
           if (c > best) {
             best = c;
             pick = t;
@@ -172,7 +162,7 @@ std::size_t Insertion::insert(std::vector<Disk>& disks, std::size_t count, const
       }
       p = pick;
     }
-    p = wrapped(p);
+    p = wrap_.into_cell(p, cell_);
     disks.push_back(Disk{p, radii.quantile(rng.uniform())});
     const std::size_t k = grid_.cell_of(p);
     next_.push_back(head_[k]);

@@ -44,8 +44,6 @@ class Insertion {
   [[nodiscard]] double spacing() const noexcept { return h_; }
 
  private:
-  // p moved into the cell on a periodic axis (PeriodicWrap's wrap, in the cell's coordinates).
-  [[nodiscard]] Point wrapped(Point p) const noexcept;
   // min(rmax, the distance from p to the nearest disk's edge (negative inside a disk) or wall).
   [[nodiscard]] double clearance(Point p, const std::vector<Disk>& disks) const;
 

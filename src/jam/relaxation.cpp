@@ -203,13 +203,7 @@ bool Relaxation::run(std::vector<Disk>& disks, std::size_t max_iterations, const
       Point& c = disks[i].centre;
       c.x += sx;
       c.y += sy;
-      // Kept in the cell on a periodic axis (PeriodicWrap's wrap, in the cell's coordinates).
-      if (c.x < cell.xmin || c.x >= cell.xmax) {
-        c.x = cell.xmin + wrap_.wrap_x(c.x - cell.xmin);
-      }
-      if (c.y < cell.ymin || c.y >= cell.ymax) {
-        c.y = cell.ymin + wrap_.wrap_y(c.y - cell.ymin);
-      }
+      c = wrap_.into_cell(c, cell);  // (kept in the cell on a periodic axis)
       double mx = c.x - built_at_[i].x;
       double my = c.y - built_at_[i].y;
       wrap_difference(mx, my);

@@ -105,8 +105,8 @@ TEST(JamInsertion, EachHoleTakesOneDiskOfARound) {
 
 TEST(JamInsertion, APartFarAwayLeavesTheLatticeFine) {
   // The lattice's square and a speck of a domain 1e9 away: the lattice's spacing follows the
-  // disks' scale, not the box's (whose area over 2^60 points would give a spacing of about 0.9),
-  // so the hole in the square takes the disk.
+  // disks' scale, not the box's (1e9 across, a billion billion times the square's area), so the
+  // hole in the square takes the disk.
   const Stage s(
       fp::Domain::from_wkt("MULTIPOLYGON(((0 0,1 0,1 1,0 1,0 0)),((1000000000 1000000000,1000000000.5 1000000000,"
                            "1000000000.5 1000000000.5,1000000000 1000000000.5,1000000000 1000000000)))"));
