@@ -185,7 +185,7 @@ TEST(PeriodicStats, ShearCellWalls) {
     EXPECT_TRUE(s.walls);
     // The band is along the walls only: two strips 2r high.
     EXPECT_NEAR(s.band_area, 2 * 2 * r * cell.width(), 0.01 * s.band_area);
-    EXPECT_EQ(s.band_disks, 2 * c);  // centres within 2r of a wall: the rows on them
+    EXPECT_EQ(s.band_disks, 2 * c);  // gaps to a wall below r: the rows on them
     EXPECT_EQ(s.interior_disks, c * (rows - 4));
     EXPECT_EQ(s.interior_coordination, 6.0);
     // The largest empty circle: in a pocket between two disks and a wall, r / 4.

@@ -130,7 +130,7 @@ TEST(Stats, ContactToleranceAndRattlers) {
   EXPECT_EQ(s.contacts, 0U);
 }
 
-// Band disks (centre within band_width of the boundary) against the others: medians by area and
+// Band disks (gap to the boundary below band_width / 2) against the others: medians by area and
 // the two-sample KS distance by area, on hand-computed configurations.
 TEST(Stats, SizeSegregation) {
   const fp::Domain domain = rectangle(20, 20);
@@ -156,6 +156,15 @@ TEST(Stats, SizeSegregation) {
   s = fp::measure(domain, disks, o);
   EXPECT_DOUBLE_EQ(s.segregation_ks_area, 0.8);
   EXPECT_EQ(s.inside_median_area, 2);
+  // Every layer along the wall with the same mix of sizes: 0. The gap decides, not the centre: the
+  // small disk of the second layer (gap 3) has its centre within the band width (3.5 < 4), the
+  // large one beside it not; counted by the centre, the band would hold two small disks to one
+  // large.
+  disks = {{{3, 1}, 0.5}, {{9, 2.5}, 2}, {{3, 3.5}, 0.5}, {{15, 5}, 2}};
+  s = fp::measure(domain, disks, o);
+  EXPECT_EQ(s.band_disks, 2U);
+  EXPECT_EQ(s.band_median_area, s.inside_median_area);
+  EXPECT_EQ(s.segregation_ks_area, 0);
   // The band is measured from every ring: a disk next to a hole is a band disk.
   const fp::Domain holed = fp::Domain::from_wkt("POLYGON((0 0,20 0,20 20,0 20,0 0),(9 9,11 9,11 11,9 11,9 9))");
   s = fp::measure(holed, std::vector<fp::Disk>{{{12.5, 10}, 1}, {{5, 15}, 1}}, o);

@@ -30,11 +30,15 @@
 // - Sizes: the achieved radii against the requested distribution, by number and by area (each
 //   disk weighted by r^2); Kolmogorov-Smirnov distances sup |F_achieved - F_requested|; a table
 //   per class for discrete and grading-curve requests; a log-spaced histogram.
-// - Size segregation: the disks whose centre lies within band_width of the boundary ("band
-//   disks") against the others. Their medians by area, and the two-sample Kolmogorov-Smirnov
-//   distance by area between their radii: 0 when the walls hold the same mix of sizes as the
-//   inside; a generator that fills the cusps along the walls with the small disks shows it (the
-//   band then holds more of the fines than the inside, a wall effect of its own).
+// - Size segregation: the "band disks", those whose gap to the boundary (the distance of the
+//   centre minus the radius) is below band_width / 2 (at the default width, below rmax: the wall
+//   layer), against the others. The gap rather than the centre decides, so that every size has
+//   the same room to count: by the centre, the small disks of the second layer would count and the
+//   large ones beside them not, and a packing with the same mix of sizes in every layer would read
+//   as segregated. Their medians by area, and the two-sample Kolmogorov-Smirnov distance by area
+//   between their radii: 0 when the walls hold the same mix of sizes as the inside; a generator
+//   that fills the cusps along the walls with the small disks shows it (the band then holds more
+//   of the fines than the inside, a wall effect of its own).
 // - Clearance f(p) = min(s(p), min_i |p - c_i| - r_i), s the signed distance to the boundary
 //   (positive inside): the radius of the largest disk centred at p that fits. It is 1-Lipschitz.
 // - Largest empty circle: max f over the domain, by branch and bound on a quadtree over a grid of
@@ -266,7 +270,7 @@ struct PackingStats {
   std::size_t interior_disks = 0;                   ///< disks wholly in the interior
   double interior_coordination = 0;                 ///< their mean number of disk-disk contacts
 
-  std::size_t band_disks = 0;      ///< disks with the centre within band_width of the boundary
+  std::size_t band_disks = 0;      ///< disks closer than band_width / 2 to the boundary
   double band_median_area = 0;     ///< median radius by area of the band disks (0: none)
   double inside_median_area = 0;   ///< the same for the other disks
   double segregation_ks_area = 0;  ///< two-sample KS distance by area, band disks against the others

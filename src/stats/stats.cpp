@@ -289,8 +289,12 @@ PackingStats measure(const Domain& domain, std::span<const Disk> disks, const St
 
   std::vector<double> band;
   std::vector<double> inside;
+  // A band disk comes within w / 2 of the boundary: its gap to the walls, not its centre, decides,
+  // so every size has the same room to count (by its centre, a small disk a layer behind the wall
+  // layer would be a band disk and a large one beside it not, and a packing mixed alike in every
+  // layer would read as segregated).
   for (const Disk& d : disks) {
-    (edges.closer_than(d.centre, w) ? band : inside).push_back(d.radius);
+    (edges.closer_than(d.centre, d.radius + w / 2) ? band : inside).push_back(d.radius);
   }
   s.band_disks = band.size();
   s.band_median_area = median_by_area(band);
