@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 #include <numbers>
 #include <string>
@@ -55,9 +56,8 @@ TEST_P(TargetFraction, ReachedWithTheRequestedRadiiAndEvenDensity) {
   EXPECT_GE(p.target->scale, 1.0);
   expect_certified(domain, p.disks);
 
-  // The radii are the drawn ones; the density is as even as the dense fill's: its sparsest cells
-  // (1st percentile of the 8-rmax cells) as far below the median, relatively, and the interior
-  // (sampled) at F, not denser or looser than the band.
+  // The radii are the drawn ones; the interior (sampled) is at F, not denser or looser than the
+  // band.
   fp::StatsOptions so;
   so.requested = o.radii;
   so.samples = 250'000;
@@ -70,13 +70,25 @@ TEST_P(TargetFraction, ReachedWithTheRequestedRadiiAndEvenDensity) {
   EXPECT_LE(s.sizes.ks_area, 0.02) << s.sizes.requested;
   EXPECT_NEAR(s.interior_fraction, c.fraction, 4 * s.interior_error + 0.005);
   ASSERT_GT(s.cell_coverage.cells, 50U);
-  o.fraction.reset();
-  const fp::PackingStats dense = fp::measure(domain, fp::fill(domain, o).disks, so);
-  const double even = s.cell_coverage.p1 / s.cell_coverage.p50;
-  const double even_dense = dense.cell_coverage.p1 / dense.cell_coverage.p50;
-  EXPECT_GE(even, even_dense - 0.04) << "p1 " << s.cell_coverage.p1 << ", median " << s.cell_coverage.p50
-                                     << "; dense p1 " << dense.cell_coverage.p1 << ", median "
-                                     << dense.cell_coverage.p50;
+
+  // The density is as even as the dense fill's: its sparsest cells (1st percentile of the 8-rmax
+  // cells) as far below the median, relatively. The 1st percentile of the plate's 100 cells is
+  // their minimum, which scatters by 0.03 from seed to seed in both fills, so the means over
+  // four seeds are compared.
+  so.samples = 0;
+  so.requested.reset();
+  double even = 0;
+  double even_dense = 0;
+  for (std::uint64_t seed = 5; seed < 9; ++seed) {
+    o.seed = seed;
+    o.fraction = c.fraction;
+    const fp::PackingStats target = fp::measure(domain, fp::fill(domain, o).disks, so);
+    o.fraction.reset();
+    const fp::PackingStats dense = fp::measure(domain, fp::fill(domain, o).disks, so);
+    even += target.cell_coverage.p1 / target.cell_coverage.p50 / 4;
+    even_dense += dense.cell_coverage.p1 / dense.cell_coverage.p50 / 4;
+  }
+  EXPECT_GE(even, even_dense - 0.04) << "means of p1 / median over seeds 5-8: " << even << ", dense " << even_dense;
 }
 
 INSTANTIATE_TEST_SUITE_P(PlateWithHoles, TargetFraction,

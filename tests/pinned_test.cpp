@@ -107,10 +107,10 @@ INSTANTIATE_TEST_SUITE_P(
     Fills, Pinned,
     ::testing::Values(Pin{"plate_with_holes", fp::Method::open, false, 0, false, 7, 3879, 0x4ab6402df940cb92ULL},
                       Pin{"plate_with_holes", fp::Method::open, true, 0, false, 7, 3840, 0x468a1a926165b5efULL},
-                      Pin{"comb", fp::Method::boundary, true, 0, false, 7, 4059, 0x735315240fb5653fULL},
+                      Pin{"comb", fp::Method::boundary, true, 0, false, 7, 4057, 0xd14bc7d983e1b1d7ULL},
                       Pin{"big_polygon", fp::Method::boundary, true, 0, false, 3, 4211, 0x0d7a5767fca33da3ULL},
                       Pin{"comb", fp::Method::boundary, true, 0.5, false, 7, 2021, 0x21efa115983744f3ULL},
-                      Pin{"plate_with_holes", fp::Method::boundary, true, 0.1, false, 7, 3643, 0xdc64474956b3e5e3ULL},
+                      Pin{"plate_with_holes", fp::Method::boundary, true, 0.1, false, 7, 3623, 0x59c811bfbce0776aULL},
                       Pin{"l_shape", fp::Method::boundary, true, 0, true, 7, 4211, 0x86ec661eab409c4bULL}));
 
 }  // namespace

@@ -58,41 +58,36 @@ inline V2 square_root(V2 a) noexcept {
 }
 
 // The smallest rho > 0 with |u + rho v| = ri + rho that `accept` takes, or -1; lane by lane in
-// a V2 (pocket_of_nodes()), where a lane whose quadratic is linear is NaN.
+// a V2 (pocket_of_nodes()). The quadratic qa rho^2 + qb rho + qc = 0 is solved without
+// cancellation: with q = -(qb + sign(qb) sqrt(disc)) / 2 the roots are q / qa and qc / q. The
+// textbook (-qb +- sqrt(disc)) / (2 qa) subtracts two nearly equal numbers when qa is near 0,
+// which is where two equal disks resting on a wall's line put it (|v| = 1 but for rounding): the
+// small root, their cusp, lost every digit and read as no pocket, so the cusp was kept as a void
+// for every radius. qa = 0 (a linear equation) needs no case of its own: q / qa is infinite and
+// refused, and qc / q is the linear root -qc / qb.
 template <class T, class Accept>
 inline T smallest_root(T ux, T uy, T vx, T vy, T ri, Accept accept) noexcept {
   const T qa = vx * vx + vy * vy - 1.0;
   const T qb = 2.0 * (ux * vx + uy * vy - ri);
   const T qc = ux * ux + uy * uy - ri * ri;
   constexpr double inf = std::numeric_limits<double>::infinity();
-  // Whether rho is a root to take (positive, finite, accepted), without branches.
+  // Whether rho is a root to take (positive, finite, accepted), without branches. A negative
+  // discriminant (no root) gives NaN roots, which it refuses.
   auto ok = [&](T rho) { return (rho > 0.0) & (rho < inf) & accept(rho); };
-  if constexpr (std::is_same_v<T, double>) {
-    if (qa == 0) {
-      const double rho = -qc / qb;
-      return ok(rho) ? rho : -1;
-    }
-  }
-  // A negative discriminant (no root) gives NaN roots, which ok() refuses.
   const T sq = square_root(qb * qb - 4.0 * qa * qc);
-  const T half = 0.5 / qa;
-  const T hi = (-qb + sq) * half;
-  const T lo = (-qb - sq) * half;
-  const auto ok_hi = ok(hi);
-  const auto ok_lo = ok(lo);
-  const T best = select(ok_hi, hi, lanes<T>(-1));
-  const T root = select(ok_lo & (lnot(ok_hi) | (lo < hi)), lo, best);
-  if constexpr (std::is_same_v<T, double>) {
-    return root;
-  } else {
-    return select(qa == 0.0, lanes<T>(std::numeric_limits<double>::quiet_NaN()), root);
-  }
+  const T q = -0.5 * (qb + select(qb < 0.0, -sq, sq));
+  const T first = q / qa;
+  const T second = qc / q;
+  const auto ok_first = ok(first);
+  const auto ok_second = ok(second);
+  const T best = select(ok_first, first, lanes<T>(-1));
+  return select(ok_second & (lnot(ok_first) | (second < first)), second, best);
 }
 
 // pocket() of three nodes (disks or reflex vertices) a, b, d, given by their centres and radii:
 // in a double (T = double), or two triples in the lanes of a V2. A lane whose system is
-// degenerate is -1 in a double and NaN in a V2, and one whose quadratic is linear (a lane
-// cannot branch) is NaN in a V2 too: both are rare, and pocket_pair() computes them alone.
+// degenerate is -1 in a double and NaN in a V2 (a lane cannot branch): rare, and pocket_pair()
+// computes it alone.
 template <class T>
 [[nodiscard]] inline T pocket_of_nodes(T ax, T ay, T ra, T bx, T by, T rb, T dx, T dy, T rd,
                                        const LengthScale& unit) noexcept {
