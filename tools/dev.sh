@@ -2,10 +2,11 @@
 # frontpack developer entry point: installs what is missing, configures, builds, runs.
 #
 #   tools/dev.sh demo   install packages, build (Release), fill a bundled shape (CSV + SVG in build/)
-#   tools/dev.sh test   install packages, build, run the whole test suite in Release, under
-#                       AddressSanitizer + UndefinedBehaviorSanitizer, and built with Clang (the
-#                       pinned packings must come out the same bits), then run each fuzz target
-#                       for FRONTPACK_FUZZ_SECONDS (default 20) (what CI runs)
+#   tools/dev.sh test   install packages, build, run the whole test suite under AddressSanitizer +
+#                       UndefinedBehaviorSanitizer (Clang), in Release, and in Release built with
+#                       Clang (the pinned packings must come out the same bits), then run each fuzz
+#                       target, from the sanitizer build, for FRONTPACK_FUZZ_SECONDS (default 20)
+#                       (what CI runs)
 #   tools/dev.sh build  install packages and build (Release) only
 #   tools/dev.sh fuzz [SECONDS]  build the libFuzzer programs (Clang) and run each target
 #
@@ -64,12 +65,16 @@ run_tests() {  # $1 = preset
 # than 30 s or above 4 GB stops the run with the input saved in build/fuzz/findings/<target>/:
 # commit it to tests/fuzz/regressions/<target>/ under a name that says what it found.
 run_fuzzers() {
-  build fuzz
+  # The fuzz programs come from the sanitizer build (the `asan` configure preset, which the `fuzz`
+  # build preset builds only those of): the library is compiled once for the tests and for them.
+  echo "==> building the fuzz programs (asan)"
+  cmake --preset asan >/dev/null
+  cmake --build --preset fuzz
   for t in "${fuzz_targets[@]}"; do
     mkdir -p "build/fuzz/corpus/$t" "build/fuzz/findings/$t"
     echo "==> fuzzing $t for $1 s"
     local rc=0
-    "build/fuzz/tests/fuzz/fuzz_$t" -max_total_time="$1" -timeout=30 -rss_limit_mb=4096 -print_final_stats=1 \
+    "build/asan/tests/fuzz/fuzz_$t" -max_total_time="$1" -timeout=30 -rss_limit_mb=4096 -print_final_stats=1 \
       -artifact_prefix="build/fuzz/findings/$t/" "build/fuzz/corpus/$t" "tests/fuzz/corpus/$t" \
       "tests/fuzz/regressions/$t" > "build/fuzz/findings/$t.log" 2>&1 || rc=$?
     grep -E '^(stat::|==|SUMMARY|frontpack fuzz|artifact|INFO: +[0-9]+ files found)' "build/fuzz/findings/$t.log" || true
