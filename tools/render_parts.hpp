@@ -57,8 +57,13 @@ struct ColourScale {
     if (!(rmax > rmin)) {
       return kLevels / 2;
     }
+    // Beyond [0, 1] for a panel edge outside the disks' range, infinite far beyond it (radii near
+    // the largest double): decided before the conversion, which is undefined out of range.
     const double t = (r - rmin) / (rmax - rmin);
-    return std::min(kLevels - 1, static_cast<std::size_t>(std::max(0.0, t) * kLevels));
+    if (!(t > 0)) {
+      return 0;
+    }
+    return t >= 1 ? kLevels - 1 : std::min(kLevels - 1, static_cast<std::size_t>(t * kLevels));
   }
   [[nodiscard]] static Rgb colour(std::size_t level) { return viridis((static_cast<double>(level) + 0.5) / kLevels); }
 };
