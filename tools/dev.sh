@@ -49,10 +49,10 @@ install_packages() {
   "${sudo[@]}" env DEBIAN_FRONTEND=noninteractive apt-get install -y -q --no-install-recommends "${missing[@]}"
 }
 
-build() {  # $1 = preset
-  echo "==> configuring and building ($1)"
+build() {  # $1 = configure preset, $2 = build preset (default: the same name)
+  echo "==> configuring and building (${2:-$1})"
   cmake --preset "$1" >/dev/null
-  cmake --build --preset "$1"
+  cmake --build --preset "${2:-$1}"
 }
 
 run_tests() {  # $1 = preset
@@ -65,11 +65,9 @@ run_tests() {  # $1 = preset
 # than 30 s or above 4 GB stops the run with the input saved in build/fuzz/findings/<target>/:
 # commit it to tests/fuzz/regressions/<target>/ under a name that says what it found.
 run_fuzzers() {
-  # The fuzz programs come from the sanitizer build (the `asan` configure preset, which the `fuzz`
-  # build preset builds only those of): the library is compiled once for the tests and for them.
-  echo "==> building the fuzz programs (asan)"
-  cmake --preset asan >/dev/null
-  cmake --build --preset fuzz
+  # The fuzz programs come from the sanitizer build (the `asan` configure preset, of which the
+  # `fuzz` build preset builds only them): the library is compiled once for the tests and for them.
+  build asan fuzz
   for t in "${fuzz_targets[@]}"; do
     mkdir -p "build/fuzz/corpus/$t" "build/fuzz/findings/$t"
     echo "==> fuzzing $t for $1 s"

@@ -63,7 +63,7 @@ struct ColourScale {
     if (!(t > 0)) {
       return 0;
     }
-    return t >= 1 ? kLevels - 1 : std::min(kLevels - 1, static_cast<std::size_t>(t * kLevels));
+    return t >= 1 ? kLevels - 1 : static_cast<std::size_t>(t * kLevels);  // (t * 64 < 64 exactly)
   }
   [[nodiscard]] static Rgb colour(std::size_t level) { return viridis((static_cast<double>(level) + 0.5) / kLevels); }
 };
