@@ -3,6 +3,7 @@
 // issue #6: a by-area sand grading curve reproduced by area in a certified packing.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <iostream>
@@ -433,4 +434,32 @@ TEST(Stats, CoverageProfileAndCellsOfASquareLattice) {
   s = fp::measure(domain, shifted, o);
   EXPECT_NEAR(s.cell_coverage.p1, quarter_pi - std::numbers::pi / 64, 1e-12);
   EXPECT_NEAR(s.cell_coverage.p5, quarter_pi, 1e-12);
+  // The map shows each where it is, and nothing anywhere else.
+  const fp::CellCoverage& c = s.cell_coverage;
+  ASSERT_EQ(c.nx, 25U);
+  ASSERT_EQ(c.ny, 25U);
+  ASSERT_EQ(c.map.size(), c.nx * c.ny);
+  EXPECT_EQ(c.origin.x, 0);
+  EXPECT_EQ(c.origin.y, 0);
+  std::size_t interior = 0;
+  std::size_t low = 0;
+  for (std::size_t j = 0; j < c.ny; ++j) {
+    for (std::size_t i = 0; i < c.nx; ++i) {
+      const double v = c.map[j * c.nx + i];
+      const bool inner = i > 0 && j > 0 && i + 1 < c.nx && j + 1 < c.ny;
+      EXPECT_EQ(!std::isnan(v), inner) << i << ", " << j;
+      if (std::isnan(v)) {
+        continue;
+      }
+      ++interior;
+      const bool holds_one = std::any_of(missing.begin(), missing.end(), [&](const fp::Disk& d) {
+        return static_cast<std::size_t>((d.centre.x - c.origin.x) / c.cell_side) == i &&
+               static_cast<std::size_t>((d.centre.y - c.origin.y) / c.cell_side) == j;
+      });
+      EXPECT_NEAR(v, holds_one ? quarter_pi - std::numbers::pi / 64 : quarter_pi, 1e-12) << i << ", " << j;
+      low += holds_one ? 1 : 0;
+    }
+  }
+  EXPECT_EQ(interior, c.cells);
+  EXPECT_EQ(low, 6U);
 }

@@ -253,6 +253,7 @@ frontpack_tool_check(stats_voids 0
        "coverage_profile/0/error=^[0-9]" "coverage_profile/0/samples=^[1-9][0-9]*$" "coverage_profile/6/from_rmax=^6(\\.0)?$"
        "coverage_profile/6/to=^$" "coverage_profile/6/to_rmax=^$" "cell_coverage/cell_side=^1(\\.0)?$" "cell_coverage/cells=^0$"
        "cell_coverage/p1=^0(\\.0)?$" "cell_coverage/p5=^0(\\.0)?$" "cell_coverage/p50=^0(\\.0)?$" "cell_coverage/sd=^0(\\.0)?$"
+       "cell_coverage/nx=^1$" "cell_coverage/ny=^1$" "cell_coverage/map/0=^$"
   ARGS stats ${SQ} ${TD}/good.csv --hole-radius 0.1 --hole-radius 0.3 --json ${O}/s.json)
 frontpack_tool_check(stats_bad_hole_radius 5 "--hole-radius '-1': expected a finite number > 0"
   ARGS stats ${SQ} ${TD}/good.csv --hole-radius=-1)
@@ -281,7 +282,9 @@ frontpack_tool_check(stats_periodic 0
        "band_fraction_error=^$" "band_median_by_area=^$" "segregation_ks_by_area=^$" "band_disks=^0$"
        "wall_contacts=^0$" "interior_fraction=^0\\.8" "mean_coordination=^[34]\\." "rattlers=^[0-9]+$"
        "coverage_profile/0/samples=^0$" "coverage_profile/5/samples=^0$" "coverage_profile/6/samples=^[1-9][0-9]+$"
-       "cell_coverage/cells=^49$" "cell_coverage/p1=^0\\.[678]" "cell_coverage/p50=^0\\.8" "largest_empty_circle/radius_over_rmax=^0\\."
+       "cell_coverage/cells=^49$" "cell_coverage/p1=^0\\.[678]" "cell_coverage/p50=^0\\.8" "cell_coverage/nx=^7$"
+       "cell_coverage/ny=^7$" "cell_coverage/origin/0=^0(\\.0)?$" "cell_coverage/map/0=^0\\.[678]" "cell_coverage/map/48=^0\\.[678]"
+       "largest_empty_circle/radius_over_rmax=^0\\."
        "holes/0/radius=^0\\.0[234]"
   ARGS stats --periodic 2,2 ${TOOL_OUT}/stats_periodic_fill/p.csv --json ${TOOL_OUT}/stats_periodic/s.json)
 set_tests_properties(tool.stats_periodic PROPERTIES FIXTURES_REQUIRED periodic_fill_csv)

@@ -82,8 +82,22 @@ void add_void_json(Json& j, const frontpack::PackingStats& s) {
   }
   j["coverage_profile"] = profile;
   const frontpack::CellCoverage& c = s.cell_coverage;
-  j["cell_coverage"] =
-      Json{{"cell_side", c.cell_side}, {"cells", c.cells}, {"p1", c.p1}, {"p5", c.p5}, {"p50", c.p50}, {"sd", c.sd}};
+  // The map row by row from below, null where a cell is not wholly in the interior, each value
+  // to 6 decimals (a cell of 8 rmax holds some 50 disks: its coverage is not known closer).
+  Json map = Json::array();
+  for (const double v : c.map) {
+    map.push_back(std::isnan(v) ? Json(nullptr) : Json(std::round(v * 1e6) / 1e6));
+  }
+  j["cell_coverage"] = Json{{"cell_side", c.cell_side},
+                            {"cells", c.cells},
+                            {"p1", c.p1},
+                            {"p5", c.p5},
+                            {"p50", c.p50},
+                            {"sd", c.sd},
+                            {"origin", Json::array({c.origin.x, c.origin.y})},
+                            {"nx", c.nx},
+                            {"ny", c.ny},
+                            {"map", std::move(map)}};
 }
 
 }  // namespace

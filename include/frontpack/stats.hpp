@@ -230,7 +230,7 @@ struct CoverageBin {
 
 /// The covered fractions of the square cells of side cell_side (8 rmax) that lie wholly in the
 /// interior: their number, the 1st, 5th and 50th percentiles (nearest rank) and the standard
-/// deviation (over the cells).
+/// deviation (over the cells), and the map of them, where seams and sparse patches show.
 struct CellCoverage {
   double cell_side = 0;
   std::size_t cells = 0;  ///< 0: not computed, or no cell wholly in the interior
@@ -238,6 +238,15 @@ struct CellCoverage {
   double p5 = 0;
   double p50 = 0;
   double sd = 0;
+  /// The map: the cells tile the domain's box from its lower-left corner `origin`, nx across and
+  /// ny up; the covered fraction of the cell whose lower-left corner is origin + (i, j) cell_side
+  /// is map[j * nx + i], NaN where that cell is not wholly in the interior (exactly `cells` of
+  /// them are not NaN). In a periodic cell the last column or row wraps around the period.
+  /// Empty when not computed.
+  Point origin{};
+  std::size_t nx = 0;
+  std::size_t ny = 0;
+  std::vector<double> map;
 };
 
 struct PackingStats {

@@ -62,6 +62,10 @@ py::array disks_array(std::vector<Disk>&& disks) {
   return owning_array(std::move(disks), {n, 3});
 }
 
+py::array grid_array(std::vector<double>&& values, std::size_t rows, std::size_t columns) {
+  return owning_array(std::move(values), {static_cast<py::ssize_t>(rows), static_cast<py::ssize_t>(columns)});
+}
+
 Ring ring_from(const py::handle& array) {
   const Doubles a = table(array, 2, "a ring");
   Ring ring(static_cast<std::size_t>(a.shape(0)));

@@ -31,6 +31,9 @@ void bind_io(py::module_& m);
 [[nodiscard]] std::vector<Disk> disks_from(const py::handle& array);
 /// An (N, 3) float64 array viewing `disks` (moved into a capsule, the array's base): no copy.
 [[nodiscard]] py::array disks_array(std::vector<Disk>&& disks);
+/// A (rows, columns) float64 array viewing `values`, row by row (moved into a capsule, the array's
+/// base): no copy.
+[[nodiscard]] py::array grid_array(std::vector<double>&& values, std::size_t rows, std::size_t columns);
 /// A ring from an (N, 2) array-like. Throws ValueError for another shape.
 [[nodiscard]] Ring ring_from(const py::handle& array);
 /// An (N, 2) float64 array, a copy of the ring's vertices.

@@ -118,6 +118,10 @@ py::dict stats_dict(const PackingStats& s) {
   cells["p5"] = s.cell_coverage.p5;
   cells["p50"] = s.cell_coverage.p50;
   cells["sd"] = s.cell_coverage.sd;
+  cells["origin"] = py::make_tuple(s.cell_coverage.origin.x, s.cell_coverage.origin.y);
+  // (ny, nx): map[j, i] is the cell at origin + (i, j) cell_side, NaN outside the interior.
+  std::vector<double> map = s.cell_coverage.map;
+  cells["map"] = grid_array(std::move(map), s.cell_coverage.ny, s.cell_coverage.nx);
   d["cell_coverage"] = cells;
   d["sizes"] = sizes_dict(s.sizes);
   return d;

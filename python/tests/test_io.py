@@ -136,6 +136,26 @@ def test_measure(packing):
         frontpack.measure(DOMAIN, [[0.1, 0.1, -1.0]])
 
 
+def test_cell_coverage_map():
+    # A square lattice of disks of radius r, spacing 2 r, in a square of 64 r (r a power of two:
+    # the cells of 8 r tile it exactly): each cell covers pi / 4; one disk taken out of the cell
+    # at column 2, row 3 shows there alone.
+    r = 1 / 64
+    # (lattice disk (9, 13), centre (19 r, 27 r), lies wholly in the cell [16 r, 24 r] x [24 r, 32 r])
+    disks = [[(2 * i + 1) * r, (2 * j + 1) * r, r] for j in range(32) for i in range(32) if (i, j) != (9, 13)]
+    assert len(disks) == 32 * 32 - 1
+    s = frontpack.measure("POLYGON((0 0,1 0,1 1,0 1,0 0))", disks, samples=0)["cell_coverage"]
+    assert s["origin"] == (0.0, 0.0) and s["cell_side"] == 8 * r
+    grid = s["map"]
+    assert grid.shape == (8, 8) and grid.dtype == np.float64
+    interior = ~np.isnan(grid)
+    assert interior.sum() == s["cells"] == 36  # the outer ring of cells comes within 2 r of a wall
+    low = np.argwhere(grid < math.pi / 4 - 1e-9)
+    assert low.tolist() == [[3, 2]]  # map[j, i]
+    assert grid[3, 2] == pytest.approx(math.pi / 4 * 15 / 16, abs=1e-12)
+    assert s["p1"] == grid[3, 2]
+
+
 def test_deck_and_wall_disks(packing):
     walls = frontpack.wall_disks(DOMAIN, 0.01, 0.01)
     assert walls.shape[1] == 3 and len(walls) > 100

@@ -1,9 +1,10 @@
 // Cell coverage: the covered fraction of each square cell of side 8 rmax lying wholly in the
-// interior, from the exact areas of the disks' intersections with the cells (in floating point;
-// overlapping disks would count their common area twice).
+// interior, as a map and its percentiles, from the exact areas of the disks' intersections with
+// the cells (in floating point; overlapping disks would count their common area twice).
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <numbers>
 #include <vector>
 
@@ -82,6 +83,10 @@ void measure_cell_coverage(const Domain& domain, std::span<const Disk> disks, co
       covered.push_back(0);
     }
   }
+  out.origin = {b.xmin, b.ymin};
+  out.nx = nx;
+  out.ny = ny;
+  out.map.assign(nx * ny, std::numeric_limits<double>::quiet_NaN());
   if (covered.empty()) {
     return;
   }
@@ -115,6 +120,11 @@ void measure_cell_coverage(const Domain& domain, std::span<const Disk> disks, co
   for (double& a : covered) {
     a /= area;
     sum += a;
+  }
+  for (std::size_t c = 0; c < nx * ny; ++c) {
+    if (index[c] >= 0) {
+      out.map[c] = covered[static_cast<std::size_t>(index[c])];
+    }
   }
   const auto n = static_cast<double>(covered.size());
   const double mean = sum / n;

@@ -94,6 +94,7 @@ PackingStats measure_scaled(const Domain& domain, std::span<const Disk> disks, c
     bin.to *= inv;
   }
   s.cell_coverage.cell_side *= inv;
+  s.cell_coverage.origin = {s.cell_coverage.origin.x * inv, s.cell_coverage.origin.y * inv};
   s.sizes =
       measure_sizes(radii, options.requested ? &options.requested->distribution() : nullptr, options.histogram_bins);
   return s;
