@@ -15,6 +15,7 @@ default), from the shape's area as `frontpack info` prints it; the spec used is 
     python3 tools/density_table.py --methods boundary    # one method's rows only
     python3 tools/density_table.py --pictures            # docs/img/density-{closed,open,boundary}.png
     python3 tools/density_table.py --sizes --contact-gaps 1e-7 1e-5   # issue #29's table, rattlers at these gaps too
+    python3 tools/density_table.py --seam-maps           # docs/img/seams-*.png: where the fronts met
 
 Python 3 standard library only. docs/density.md explains the measures and reads the table.
 """
@@ -361,6 +362,66 @@ def quality_pictures(tool, label, out_dir, log):
         log("%s: %d disks in the square, interior %.4f" % (png, j["disks"], j["interior_fraction"]))
 
 
+# --- the seams: the cell coverage's map, as a picture -------------------------------------------
+
+SEAM_MAP_RADIUS = "discrete:0.005:0.5,0.007:0.5"  # bidisperse 1:1.4 on the plate: about 45,000 disks
+SEAM_MAP_METHODS = ("closed", "boundary", JAM_METHOD)
+SEAM_MAP_RANGE = (0.70, 0.86)  # the coverage from dark to light
+SEAM_MAP_PIXELS = 6  # per cell
+
+
+def colour(t):
+    """t in [0, 1] to RGB along dark blue -> teal -> yellow (a viridis-like ramp)."""
+    stops = ((0.0, (68, 1, 84)), (0.5, (33, 145, 140)), (1.0, (253, 231, 37)))
+    for (t0, c0), (t1, c1) in zip(stops, stops[1:]):
+        if t <= t1:
+            u = (t - t0) / (t1 - t0)
+            return tuple(round(a + (b - a) * u) for a, b in zip(c0, c1))
+    return stops[-1][1]
+
+
+def write_png(path, rows):
+    """rows: lists of (r, g, b), top row first; an 8-bit RGB PNG (zlib and struct only)."""
+    import struct
+    import zlib
+    height, width = len(rows), len(rows[0])
+    raw = b"".join(b"\0" + bytes(v for px in row for v in px) for row in rows)
+
+    def chunk(kind, data):
+        return struct.pack(">I", len(data)) + kind + data + struct.pack(">I", zlib.crc32(kind + data) & 0xFFFFFFFF)
+
+    with open(path, "wb") as f:
+        f.write(b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", struct.pack(">IIBBBBB", width, height, 8, 2, 0, 0, 0))
+                + chunk(b"IDAT", zlib.compress(raw, 9)) + chunk(b"IEND", b""))
+
+
+def seam_maps(tool, out_dir, log):
+    """docs/img/seams-METHOD.png: the cell coverage's map (cell_coverage.map of fill --json) of the
+    plate at bidisperse 1:1.4, seed 1, each cell of 8 rmax a square of SEAM_MAP_PIXELS, coloured
+    from SEAM_MAP_RANGE[0] (dark) to [1] (light), white outside the interior."""
+    os.makedirs(out_dir, exist_ok=True)
+    plate = os.path.join(ROOT, "shapes", NARROW_SHAPE)
+    lo, hi = SEAM_MAP_RANGE
+    with tempfile.TemporaryDirectory(prefix="seam_maps_") as workdir:
+        for method in SEAM_MAP_METHODS:
+            #   frontpack fill shapes/plate_with_holes.wkt --method M [--jam] --radius SEAM_MAP_RADIUS --seed 1 --json s.json
+            j, _ = fill(tool, plate, method, SEAM_MAP_RADIUS, PICTURE_SEED, workdir)
+            c = j["cell_coverage"]
+            nx, ny, values = c["nx"], c["ny"], c["map"]
+            rows = []
+            for row in range(ny - 1, -1, -1):
+                line = []
+                for i in range(nx):
+                    v = values[row * nx + i]
+                    px = (255, 255, 255) if v is None else colour(min(max((v - lo) / (hi - lo), 0.0), 1.0))
+                    line.extend([px] * SEAM_MAP_PIXELS)
+                rows.extend([line] * SEAM_MAP_PIXELS)
+            png = os.path.join(out_dir, "seams-%s.png" % method.replace("+", "-"))
+            write_png(png, rows)
+            log("%s: %d disks, interior %.4f, cells %d: p1 %.4f, p5 %.4f, median %.4f, sd %.4f"
+                % (png, j["disks"], j["interior_fraction"], c["cells"], c["p1"], c["p5"], c["p50"], c["sd"]))
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     ap.add_argument("--frontpack", default=os.path.join(ROOT, "build", "release", "tools", "frontpack"),
@@ -382,6 +443,9 @@ def main():
     ap.add_argument("--quality-pictures", metavar="LABEL",
                     help="write docs/img/quality-{bidisperse,seam}-LABEL.png with --frontpack and no table "
                     "(the bidisperse plate and the centre of a 10 x 10 square at rmax / rmin = 10)")
+    ap.add_argument("--seam-maps", action="store_true",
+                    help="write docs/img/seams-{closed,boundary,boundary-jam}.png, the cell coverage's map of the plate "
+                    "at bidisperse 1:1.4 (%s, seed %d), and no table" % (SEAM_MAP_RADIUS, PICTURE_SEED))
     ap.add_argument("--contact-gaps", nargs="*", type=float, default=[],
                     help="--sizes: also the share of rattlers when a gap up to each of these (in rmax) counts as a contact")
     ap.add_argument("--jobs", type=int, default=2, help="runs at a time for --sizes (default 2)")
@@ -398,6 +462,9 @@ def main():
 
     if args.pictures:
         pictures(tool, args.img_dir, log)
+        return
+    if args.seam_maps:
+        seam_maps(tool, args.img_dir, log)
         return
     if args.quality_pictures:
         quality_pictures(tool, args.quality_pictures, args.img_dir, log)
