@@ -71,13 +71,15 @@ TEST_P(TargetFraction, ReachedWithTheRequestedRadiiAndEvenDensity) {
   EXPECT_NEAR(s.interior_fraction, c.fraction, 4 * s.interior_error + 0.005);
   ASSERT_GT(s.cell_coverage.cells, 50U);
 
-  // The density is as even as the dense fill's: its sparsest cells (1st percentile of the 8-rmax
-  // cells) as far below the median, relatively. The 1st percentile of the plate's 100 cells is
-  // their minimum, which scatters by 0.03 from seed to seed in both fills, so the means over
-  // four seeds are compared (seed 5's target fill is the one measured above; the cells do not
-  // depend on the sample points).
+  // The density is as even as the dense fill's: its sparsest cells (1st percentile of the cells)
+  // as far below the median, relatively, on the same cells (8 times the target packing's rmax: its
+  // disks are the larger). The 1st percentile of the plate's 100 cells is their minimum, which
+  // scatters by 0.03 from seed to seed in both fills, so the means over four seeds are compared
+  // (seed 5's target fill is the one measured above; the cells do not depend on the sample
+  // points).
   so.samples = 0;
   so.requested.reset();
+  so.cell_side = s.cell_coverage.cell_side;
   const auto evenness = [](const fp::PackingStats& m) { return m.cell_coverage.p1 / m.cell_coverage.p50; };
   double even = evenness(s);
   double even_dense = 0;

@@ -414,6 +414,17 @@ TEST(Stats, CoverageProfileAndCellsOfASquareLattice) {
   EXPECT_NEAR(s.cell_coverage.p50, quarter_pi, 1e-12);
   EXPECT_LT(s.cell_coverage.sd, 1e-12);
   EXPECT_TRUE(s.coverage_profile.empty());
+  // Cells of a side of one's own, 16 r (8 periods): 12.5 across, so 13 columns and rows of which
+  // the 11 x 11 inner ones are interior (their centres at least 16 r from a wall, against 2 r plus
+  // the half-diagonal), each covered pi / 4.
+  o.cell_side = 16 * r;
+  s = fp::measure(domain, shifted, o);
+  EXPECT_EQ(s.cell_coverage.cell_side, 16 * r);
+  EXPECT_EQ(s.cell_coverage.nx, 13U);
+  EXPECT_EQ(s.cell_coverage.cells, 11U * 11U);
+  EXPECT_NEAR(s.cell_coverage.p1, quarter_pi, 1e-12);
+  EXPECT_NEAR(s.cell_coverage.p50, quarter_pi, 1e-12);
+  o.cell_side = 0;
   // Six disks missing, each wholly in its own cell (the 1st percentile is the 6th of 529 cells):
   // the lowest percentile shows them, the 5th does not.
   std::vector<fp::Disk> missing;

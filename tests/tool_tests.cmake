@@ -288,6 +288,12 @@ frontpack_tool_check(stats_periodic 0
        "holes/0/radius=^0\\.0[234]"
   ARGS stats --periodic 2,2 ${TOOL_OUT}/stats_periodic_fill/p.csv --json ${TOOL_OUT}/stats_periodic/s.json)
 set_tests_properties(tool.stats_periodic PROPERTIES FIXTURES_REQUIRED periodic_fill_csv)
+# stats --cell-side: cells of 0.64 (16 rmax: the radii reach nearly 0.04) on the 2 x 2 torus, 4 x 4 of them.
+frontpack_tool_check(stats_cell_side 0 "cells: +16 interior cells of side 0\\.64 \\(16[.0-9]* rmax\\)"
+  ARGS stats --periodic 2,2 ${TOOL_OUT}/stats_periodic_fill/p.csv --cell-side 0.64)
+set_tests_properties(tool.stats_cell_side PROPERTIES FIXTURES_REQUIRED periodic_fill_csv)
+frontpack_tool_check(stats_bad_cell_side 5 "--cell-side '-0\\.5': expected a finite number > 0"
+  ARGS stats ${SQ} ${TD}/good.csv --cell-side=-0.5)
 frontpack_tool_check(fill_json_unwritable 2 "cannot write '/nonexistent/dir/s\\.json'"
   NO_FILES ${TOOL_OUT}/fill_json_unwritable/p.csv
   ARGS fill ${S}/l_shape.wkt -o ${TOOL_OUT}/fill_json_unwritable/p.csv --json /nonexistent/dir/s.json)

@@ -164,9 +164,9 @@ std::vector<std::string> void_lines(const frontpack::PackingStats& s) {
   }
   const frontpack::CellCoverage& c = s.cell_coverage;
   if (c.cells > 0) {
-    lines.push_back("cells:        " + std::to_string(c.cells) + " interior cells of side " + fmt(c.cell_side) +
-                    " (8 rmax): coverage p1 " + fmt4(c.p1) + ", p5 " + fmt4(c.p5) + ", median " + fmt4(c.p50) +
-                    ", sd " + fmt4(c.sd));
+    lines.push_back("cells:        " + std::to_string(c.cells) + " interior cells of side " + fmt(c.cell_side) + " (" +
+                    fmt(c.cell_side / s.sizes.rmax) + " rmax): coverage p1 " + fmt4(c.p1) + ", p5 " + fmt4(c.p5) +
+                    ", median " + fmt4(c.p50) + ", sd " + fmt4(c.sd));
   }
   return lines;
 }

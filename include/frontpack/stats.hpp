@@ -122,8 +122,11 @@ struct StatsOptions {
   std::vector<double> hole_radii{};
   /// Coverage by distance from the boundary (from the sample points: needs samples > 0).
   bool coverage_profile = true;
-  /// Coverage of interior cells of side 8 rmax (exact disk-square areas).
+  /// Coverage of interior cells (exact disk-square areas), and the side of the cells; 0 (or not a
+  /// finite number > 0): 8 * the largest radius. A fixed side compares packings of different
+  /// radii cell for cell.
   bool cell_coverage = true;
+  double cell_side = 0;
   /// Once a stop is requested, measure() throws CancelledError.
   std::stop_token stop{};
 };
@@ -228,9 +231,10 @@ struct CoverageBin {
   std::size_t samples = 0;
 };
 
-/// The covered fractions of the square cells of side cell_side (8 rmax) that lie wholly in the
-/// interior: their number, the 1st, 5th and 50th percentiles (nearest rank) and the standard
-/// deviation (over the cells), and the map of them, where seams and sparse patches show.
+/// The covered fractions of the square cells of side cell_side (8 rmax by default) that lie wholly
+/// in the interior: their number, the 1st, 5th and 50th percentiles (nearest rank) and the
+/// standard deviation (over the cells), and the map of them, where seams and sparse patches show.
+/// Not computed (cells 0, the map empty) when the domain's box holds more than 16 million cells.
 struct CellCoverage {
   double cell_side = 0;
   std::size_t cells = 0;  ///< 0: not computed, or no cell wholly in the interior

@@ -234,6 +234,7 @@ def measure(
     hole_radii: Sequence[float] = (),
     coverage_profile: bool = True,
     cell_coverage: bool = True,
+    cell_side: float = 0.0,
 ) -> dict[str, Any]: ...
 
 WriteFormat = Literal["csv", "yade", "lammps", "vtp", "svg"]

@@ -134,7 +134,8 @@ void bind_stats(py::module_& m) {
       "measure",
       [](const Domain& domain, const py::handle& disks, const std::optional<Radii>& requested, double contact_gap,
          double band_width, std::size_t samples, std::size_t histogram_bins, bool contacts, bool empty_circle,
-         bool holes, const std::vector<double>& hole_radii, bool coverage_profile, bool cell_coverage) {
+         bool holes, const std::vector<double>& hole_radii, bool coverage_profile, bool cell_coverage,
+         double cell_side) {
         const std::vector<Disk> ds = disks_from(disks);
         StatsOptions o;
         o.requested = requested;
@@ -148,6 +149,7 @@ void bind_stats(py::module_& m) {
         o.hole_radii = hole_radii;
         o.coverage_profile = coverage_profile;
         o.cell_coverage = cell_coverage;
+        o.cell_side = cell_side;
         PackingStats s;
         {
           py::gil_scoped_release release;
@@ -159,13 +161,13 @@ void bind_stats(py::module_& m) {
       py::arg("contact_gap") = 0.0, py::arg("band_width") = 0.0, py::arg("samples") = std::size_t{1'000'000},
       py::arg("histogram_bins") = std::size_t{20}, py::arg("contacts") = true, py::arg("empty_circle") = true,
       py::arg("holes") = true, py::arg("hole_radii") = std::vector<double>{}, py::arg("coverage_profile") = true,
-      py::arg("cell_coverage") = true,
+      py::arg("cell_coverage") = true, py::arg("cell_side") = 0.0,
       "The statistics a DEM user checks a packing by (stats.hpp; docs/distributions.md has the definitions), as "
       "a dict: packing_fraction, void_ratio, interior_fraction and band_fraction (sampled, with their binomial "
       "standard errors), contacts, mean_coordination, rattlers, wall_contacts, segregation_ks_area, "
       "largest_empty_circle, holes ({radius: count}), coverage_profile, cell_coverage, and sizes (against "
       "`requested`, a Radii). Disks must have finite centres and radii > 0 (else ValueError naming the disk). "
-      "0 for contact_gap and band_width means automatic. Deterministic.");
+      "0 for contact_gap, band_width and cell_side means automatic (cell_side: 8 rmax). Deterministic.");
 }
 
 }  // namespace frontpack::python

@@ -154,6 +154,11 @@ def test_cell_coverage_map():
     assert low.tolist() == [[3, 2]]  # map[j, i]
     assert grid[3, 2] == pytest.approx(math.pi / 4 * 15 / 16, abs=1e-12)
     assert s["p1"] == grid[3, 2]
+    # Cells of 16 r: 4 across, the inner 2 x 2 interior; the one at (1, 1) holds the gap.
+    s = frontpack.measure("POLYGON((0 0,1 0,1 1,0 1,0 0))", disks, samples=0, cell_side=16 * r)["cell_coverage"]
+    assert s["cell_side"] == 16 * r and s["map"].shape == (4, 4) and s["cells"] == 4
+    assert np.argwhere(s["map"] < math.pi / 4 - 1e-9).tolist() == [[1, 1]]
+    assert s["map"][1, 1] == pytest.approx(math.pi / 4 * 63 / 64, abs=1e-12)
 
 
 def test_deck_and_wall_disks(packing):

@@ -1,6 +1,6 @@
-// Cell coverage: the covered fraction of each square cell of side 8 rmax lying wholly in the
-// interior, as a map and its percentiles, from the exact areas of the disks' intersections with
-// the cells (in floating point; overlapping disks would count their common area twice).
+// Cell coverage: the covered fraction of each square cell (of side 8 rmax by default) lying wholly
+// in the interior, as a map and its percentiles, from the exact areas of the disks' intersections
+// with the cells (in floating point; overlapping disks would count their common area twice).
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -50,8 +50,7 @@ double area_in_box(double x0, double x1, double y0, double y1, double r) {
 }  // namespace
 
 void measure_cell_coverage(const Domain& domain, std::span<const Disk> disks, const EdgeDistanceIndex& edges, double w,
-                           double rmax, CellCoverage& out, const std::stop_token& stop) {
-  const double side = 8 * rmax;
+                           double side, CellCoverage& out, const std::stop_token& stop) {
   out.cell_side = side;
   const Box b = domain.bbox();
   if (!(side > 0) || !(b.width() > 0) || !(b.height() > 0)) {

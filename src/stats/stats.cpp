@@ -55,6 +55,7 @@ PackingStats measure_scaled(const Domain& domain, std::span<const Disk> disks, c
   StatsOptions o = options;
   o.contact_gap *= k;
   o.band_width *= k;
+  o.cell_side *= k;
   for (double& rho : o.hole_radii) {
     rho *= k;
   }
@@ -100,6 +101,11 @@ PackingStats measure_scaled(const Domain& domain, std::span<const Disk> disks, c
   return s;
 }
 
+// The side of the cell coverage's cells: the one asked for, or 8 rmax.
+double cell_side(const StatsOptions& options, double rmax) {
+  return options.cell_side > 0 && std::isfinite(options.cell_side) ? options.cell_side : 8 * rmax;
+}
+
 // The hole radii asked for, or the defaults.
 std::vector<double> hole_radii(const StatsOptions& options, const PackingStats& s, std::size_t disks) {
   std::vector<double> radii = options.hole_radii;
@@ -111,7 +117,7 @@ std::vector<double> hole_radii(const StatsOptions& options, const PackingStats& 
 
 // How far from a periodic cell the images of the disks must reach for the measures asked for:
 // rmax for the sampling (a disk covering a point of the cell), 2 rmax + the contact gap for the
-// contacts, 9 rmax for the cell coverage (a square reaching 8 rmax across a side, and a disk), and
+// contacts, the cells' side + rmax for the cell coverage (a square reaching across a side, and a disk), and
 // for the clearance rmax + its grid's side (about 2 mean radii) + the largest value of f that
 // matters: 2 rmax for the largest empty circle's first try (measure_voids() widens the images
 // when it is larger), or the largest hole radius (f is at most half the cell's diagonal).
@@ -124,7 +130,7 @@ double image_reach(const StatsOptions& options, const PackingStats& s, std::span
     reach = std::max(reach, 2 * rmax + s.contact_gap);
   }
   if (options.cell_coverage) {
-    reach = std::max(reach, 9 * rmax);
+    reach = std::max(reach, cell_side(options, rmax) + rmax);
   }
   if (options.empty_circle) {
     reach = std::max(reach, 5 * rmax);
@@ -194,8 +200,8 @@ void measure_voids(const Domain& domain, std::span<const Disk> disks, const deta
     }
   }
   if (options.cell_coverage && !disks.empty()) {
-    detail::measure_cell_coverage(domain, images.all(), edges, s.band_width, s.sizes.rmax, s.cell_coverage,
-                                  options.stop);
+    detail::measure_cell_coverage(domain, images.all(), edges, s.band_width, cell_side(options, s.sizes.rmax),
+                                  s.cell_coverage, options.stop);
   }
 }
 

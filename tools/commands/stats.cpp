@@ -32,6 +32,7 @@ struct StatsArgs {
   std::string samples = "1000000";
   std::vector<std::string> hole_radii;
   std::string contact_gap;
+  std::string cell_side;
   bool quiet = false;
 };
 
@@ -60,6 +61,9 @@ int run_stats(StatsArgs& a) {
   }
   if (!a.contact_gap.empty()) {
     options.contact_gap = parse_length("--contact-gap", a.contact_gap);
+  }
+  if (!a.cell_side.empty()) {
+    options.cell_side = parse_length("--cell-side", a.cell_side);
   }
   options.stop = stop_token();
   frontpack_tool::check_files(inputs, output_uses({}, a.json));
@@ -118,6 +122,8 @@ Command add_stats(CLI::App& app) {
   cmd->add_option("--contact-gap", args->contact_gap,
                   "the largest gap between two disks, or a disk and a wall, that counts as a contact (default: 1e-9 "
                   "of the largest radius)");
+  cmd->add_option("--cell-side", args->cell_side,
+                  "the side of the square cells whose coverage is mapped (default: 8 times the largest radius)");
   cmd->add_option("--json", args->json, "write the statistics as JSON to this file");
   cmd->add_flag("-q,--quiet", args->quiet, "print nothing but errors");
   cmd->footer(
