@@ -292,6 +292,16 @@ set_tests_properties(tool.stats_periodic PROPERTIES FIXTURES_REQUIRED periodic_f
 frontpack_tool_check(stats_cell_side 0 "cells: +16 interior cells of side 0\\.64 \\(16[.0-9]* rmax\\)"
   ARGS stats --periodic 2,2 ${TOOL_OUT}/stats_periodic_fill/p.csv --cell-side 0.64)
 set_tests_properties(tool.stats_cell_side PROPERTIES FIXTURES_REQUIRED periodic_fill_csv)
+# render --cells: the map instead of the disks, without the panel; its range in the SVG's title
+# (the torus: 7 x 7 cells); five disks in the unit square leave no interior cell.
+set(O ${TOOL_OUT}/render_cells)
+frontpack_tool_check(render_cells 0 "u\\.svg \\(svg, 300 x 300, [0-9]+ disks, 49 cells of side 0\\.3[0-9]*, coverage 0\\.[0-9]+ \\(dark\\) to 0\\.[0-9]+ \\(light\\)\\)"
+  FILE_MATCHES ${O}/u.svg "<title>frontpack cell coverage: 49 interior cells of side 0\\.3[0-9]*, from 0\\.[0-9]+ \\(dark\\) to 0\\.[0-9]+ \\(light\\)</title>"
+  ARGS render --periodic 2,2 ${TOOL_OUT}/stats_periodic_fill/p.csv --cells -o ${O}/u.svg --width 300)
+set_tests_properties(tool.render_cells PROPERTIES FIXTURES_REQUIRED periodic_fill_csv)
+set(O ${TOOL_OUT}/render_cells_none)
+frontpack_tool_check(render_cells_none 0 "wrote: .*u\\.png \\(png, 300 x 300, 5 disks, no interior cell\\)" PNG ${O}/u.png 300 300
+  ARGS render ${SQ} ${TD}/good.csv --cells -o ${O}/u.png --width 300)
 frontpack_tool_check(stats_bad_cell_side 5 "--cell-side '-0\\.5': expected a finite number > 0"
   ARGS stats ${SQ} ${TD}/good.csv --cell-side=-0.5)
 frontpack_tool_check(fill_json_unwritable 2 "cannot write '/nonexistent/dir/s\\.json'"

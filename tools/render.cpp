@@ -17,10 +17,12 @@
 #include <ostream>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "frontpack/fill.hpp"  // OptionError
 #include "frontpack/stats.hpp"
+#include "report.hpp"  // fmt, fmt4
 
 namespace frontpack_tool {
 
@@ -290,9 +292,29 @@ std::vector<frontpack::Disk> periodic_images(const frontpack::Domain& domain, st
   return images;
 }
 
+// The cells of the map, each a square filled by its coverage (the caller clips to the domain: in a
+// periodic cell the last column or row of cells reaches past the period).
+void draw_cells(cairo_t* cr, const View& view, const frontpack::CellCoverage& c) {
+  const auto [lo, hi] = coverage_range(c);
+  for (std::size_t j = 0; j < c.ny; ++j) {
+    for (std::size_t i = 0; i < c.nx; ++i) {
+      const double v = c.map[j * c.nx + i];
+      if (std::isnan(v)) {
+        continue;
+      }
+      const render_parts::Rgb colour = render_parts::viridis(hi > lo ? (v - lo) / (hi - lo) : 0.5);
+      const double x0 = c.origin.x + static_cast<double>(i) * c.cell_side;
+      const double y1 = c.origin.y + static_cast<double>(j + 1) * c.cell_side;
+      cairo_rectangle(cr, view.x(x0), view.y(y1), view.px(c.cell_side), view.px(c.cell_side));
+      cairo_set_source_rgb(cr, colour.r, colour.g, colour.b);
+      cairo_fill(cr);
+    }
+  }
+}
+
 void draw(cairo_t* cr, const View& view, Picture format, const frontpack::Domain& domain,
-          std::span<const frontpack::Disk> disks, std::span<const frontpack::Disk> images, int width_px,
-          int height_px) {
+          std::span<const frontpack::Disk> disks, std::span<const frontpack::Disk> images,
+          const std::optional<frontpack::CellCoverage>& cells, int width_px, int height_px) {
   cairo_set_source_rgb(cr, 1, 1, 1);
   cairo_paint(cr);
 
@@ -319,14 +341,24 @@ void draw(cairo_t* cr, const View& view, Picture format, const frontpack::Domain
   cairo_set_fill_rule(cr, CAIRO_FILL_RULE_WINDING);
 
   const ColourScale colours(disks);
-  if (!images.empty()) {
+  if (cells) {
+    cairo_save(cr);
+    cairo_set_fill_rule(cr, CAIRO_FILL_RULE_EVEN_ODD);
+    domain_path();
+    cairo_clip(cr);
+    cairo_set_antialias(cr, CAIRO_ANTIALIAS_NONE);  // no seam of blended pixels between two cells
+    draw_cells(cr, view, *cells);
+    cairo_restore(cr);
+  } else if (!images.empty()) {
     // Lighter: the images drawn on a group painted at a third of their opacity.
     cairo_push_group(cr);
     draw_disks(cr, view, format, images, colours, width_px, height_px);
     cairo_pop_group_to_source(cr);
     cairo_paint_with_alpha(cr, 0.35);
   }
-  draw_disks(cr, view, format, disks, colours, width_px, height_px);
+  if (!cells) {
+    draw_disks(cr, view, format, disks, colours, width_px, height_px);
+  }
 
   cairo_set_source_rgb(cr, 0.15, 0.15, 0.15);
   const double line = std::max(1.0, width_px / 800.0);
@@ -416,6 +448,16 @@ std::optional<Picture> picture_from_path(const std::filesystem::path& path) {
   return ext.size() > 1 ? picture_from_name(std::string_view(ext).substr(1)) : std::nullopt;
 }
 
+std::pair<double, double> coverage_range(const frontpack::CellCoverage& cells) {
+  double lo = std::numeric_limits<double>::quiet_NaN();
+  double hi = lo;
+  for (const double v : cells.map) {
+    lo = std::isnan(v) ? lo : std::isnan(lo) ? v : std::min(lo, v);
+    hi = std::isnan(v) ? hi : std::isnan(hi) ? v : std::max(hi, v);
+  }
+  return {lo, hi};
+}
+
 int histogram_height(int width_px) {
   return width_px / 4 + 6 * font_px(width_px);
 }
@@ -431,19 +473,26 @@ void render(frontpack::OutputFile& out, Picture format, const frontpack::Domain&
   if (width < 16 || width > 16384) {
     throw frontpack::OptionError(std::string("--width ") + std::to_string(width) + ": expected 16 to 16384 pixels");
   }
-  const double panel = options.histogram ? histogram_height(width) : 0;
+  const bool with_panel = options.histogram && !options.cells;
+  const double panel = with_panel ? histogram_height(width) : 0;
   const double height_real = make_view(domain, width).px(domain.bbox().height()) + 2 * kMarginFraction * width + panel;
   if (!(height_real <= 32767)) {
     throw frontpack::OptionError(std::string("--width ") + std::to_string(width) +
                                  ": the picture would be taller than 32767 pixels (the domain is tall "
                                  "and narrow); use a smaller width");
   }
-  const int height = picture_height(domain, width, options.histogram);
+  const int height = picture_height(domain, width, with_panel);
   View view = make_view(domain, width);
   view.height = packing_height(domain, width);
   std::optional<render_parts::Panel> histogram;
   std::string caption;
-  if (options.histogram) {
+  if (options.cells) {
+    const auto [lo, hi] = coverage_range(*options.cells);
+    caption = options.cells->cells == 0
+                  ? std::string("frontpack cell coverage: no interior cell")
+                  : "frontpack cell coverage: " + std::to_string(options.cells->cells) + " interior cells of side " +
+                        fmt(options.cells->cell_side) + ", from " + fmt4(lo) + " (dark) to " + fmt4(hi) + " (light)";
+  } else if (options.histogram) {
     histogram = render_parts::make_panel(disks, options);
     caption.append("frontpack packing. ").append(histogram->caption[0]);
     if (!histogram->caption[1].empty()) {
@@ -472,7 +521,7 @@ void render(frontpack::OutputFile& out, Picture format, const frontpack::Domain&
     const Context cr(cairo_create(surface.get()));
     const std::vector<frontpack::Disk> images =
         options.images ? periodic_images(domain, disks) : std::vector<frontpack::Disk>{};
-    draw(cr.get(), view, format, domain, disks, images, width, height);
+    draw(cr.get(), view, format, domain, disks, images, options.cells, width, height);
     if (options.stop.stop_requested()) {
       throw frontpack::CancelledError();
     }

@@ -7,11 +7,13 @@
 #include <span>
 #include <stop_token>
 #include <string>
+#include <utility>
 
 #include "frontpack/domain.hpp"
 #include "frontpack/geometry.hpp"
 #include "frontpack/output_file.hpp"
 #include "frontpack/sizes.hpp"
+#include "frontpack/stats.hpp"
 
 namespace frontpack_tool {
 
@@ -34,9 +36,17 @@ struct RenderOptions {
   /// A periodic cell: also draw, lighter, the images of the disks that cross a periodic side (each
   /// disk shifted by a period whose copy reaches into the cell), so that a seam can be inspected.
   bool images = false;
+  /// Draw this map of the cell coverage (PackingStats::cell_coverage) instead of the disks: each
+  /// interior cell filled with viridis from the map's least coverage (dark) to its largest
+  /// (light), clipped to the domain; seams and sparse patches show as dark cells. The panel below,
+  /// which keys the disks' colours, is left out (histogram is taken as false).
+  std::optional<frontpack::CellCoverage> cells{};
   /// Once a stop is requested, render() throws frontpack::CancelledError.
   std::stop_token stop{};
 };
+
+/// The least and the largest coverage of the map's interior cells (NaN, NaN if there is none).
+[[nodiscard]] std::pair<double, double> coverage_range(const frontpack::CellCoverage& cells);
 
 /// Height of the size-distribution panel for a picture width: width / 4 + 6 font sizes, the font
 /// size being width / 80 clamped to [10, 18] px; integer arithmetic (tests/tool_tests.cmake
@@ -48,7 +58,7 @@ struct RenderOptions {
 [[nodiscard]] int picture_height(const frontpack::Domain& domain, int width_px, bool histogram = true);
 
 /// Draws the domain (light grey, holes even-odd, dark outline; a periodic cell's periodic sides
-/// dashed, its walls solid) and the disks (coloured by radius,
+/// dashed, its walls solid) and the disks, or the cells of options.cells (coloured by radius,
 /// viridis: small dark blue, large yellow; thin outlines when they are at least 3 px across) on
 /// white and, unless options.histogram is false, below it the size-distribution panel: a
 /// histogram of the radii by area (each bar the share of the total disk area in a bin of equal

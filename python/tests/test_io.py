@@ -2,12 +2,14 @@
 certify()/measure() on arrays from elsewhere."""
 
 import math
+import os
+import subprocess
 
 import numpy as np
 import pytest
 
 import frontpack
-from conftest import same_bits
+from conftest import need, same_bits
 
 DOMAIN = "POLYGON((0 0,1 0,1 1,0 1,0 0),(0.3 0.3,0.3 0.5,0.5 0.5,0.5 0.3,0.3 0.3))"
 
@@ -159,6 +161,35 @@ def test_cell_coverage_map():
     assert s["cell_side"] == 16 * r and s["map"].shape == (4, 4) and s["cells"] == 4
     assert np.argwhere(s["map"] < math.pi / 4 - 1e-9).tolist() == [[1, 1]]
     assert s["map"][1, 1] == pytest.approx(math.pi / 4 * 63 / 64, abs=1e-12)
+
+
+def test_render_cells(tmp_path):
+    # The lattice of test_cell_coverage_map drawn by `frontpack render --cells` at 300 px (a margin
+    # of 6 px, 288 px to the unit, cells of 36 px): the cell with the gap darkest, the other
+    # interior cells lightest, the outer ring of cells the domain's grey.
+    matplotlib_image = need("matplotlib.image")
+    tool = os.environ.get("FRONTPACK_TOOL")
+    if not tool:
+        pytest.skip("FRONTPACK_TOOL is not set (the build has no tool)")
+    r = 1 / 64
+    disks = [[(2 * i + 1) * r, (2 * j + 1) * r, r] for j in range(32) for i in range(32) if (i, j) != (9, 13)]
+    frontpack.write(tmp_path / "d.csv", "POLYGON((0 0,1 0,1 1,0 1,0 0))", disks)
+    (tmp_path / "sq.wkt").write_text("POLYGON((0 0,1 0,1 1,0 1,0 0))\n")
+    out = subprocess.run([tool, "render", str(tmp_path / "sq.wkt"), str(tmp_path / "d.csv"), "--cells", "--width",
+                          "300", "-o", str(tmp_path / "c.png")], capture_output=True, text=True, check=True)
+    assert "36 cells of side 0.125, coverage 0.7363 (dark) to 0.7854 (light)" in out.stderr
+    img = matplotlib_image.imread(tmp_path / "c.png")
+    assert img.shape[:2] == (300, 300)
+
+    def cell(i, j):  # the pixel at the centre of cell (i, j), as 0-255 RGB
+        return tuple(round(255 * v) for v in img[300 - 6 - round((j + 0.5) * 36), 6 + round((i + 0.5) * 36)][:3])
+
+    assert cell(2, 3) == (68, 1, 84)  # viridis at 0
+    for i in range(1, 7):
+        for j in range(1, 7):
+            if (i, j) != (2, 3):
+                assert cell(i, j) == (253, 231, 37), (i, j)  # viridis at 1
+    assert cell(0, 0) == cell(7, 7) == (230, 230, 230)
 
 
 def test_deck_and_wall_disks(packing):
