@@ -295,8 +295,8 @@ set_tests_properties(tool.stats_cell_side PROPERTIES FIXTURES_REQUIRED periodic_
 # render --cells: the map instead of the disks, without the panel; its range in the SVG's title
 # (the torus: 7 x 7 cells); five disks in the unit square leave no interior cell.
 set(O ${TOOL_OUT}/render_cells)
-frontpack_tool_check(render_cells 0 "u\\.svg \\(svg, 300 x 300, [0-9]+ disks, 49 cells of side 0\\.3[0-9]*, coverage 0\\.[0-9]+ \\(dark\\) to 0\\.[0-9]+ \\(light\\)\\)"
-  FILE_MATCHES ${O}/u.svg "<title>frontpack cell coverage: 49 interior cells of side 0\\.3[0-9]*, from 0\\.[0-9]+ \\(dark\\) to 0\\.[0-9]+ \\(light\\)</title>"
+frontpack_tool_check(render_cells 0 "u\\.svg \\(svg, 300 x 300, [0-9]+ disks, 49 interior cells of side 0\\.3[0-9]*, coverage 0\\.[0-9]+ \\(dark\\) to 0\\.[0-9]+ \\(light\\)\\)"
+  FILE_MATCHES ${O}/u.svg "<title>frontpack cell coverage: 49 interior cells of side 0\\.3[0-9]*, coverage 0\\.[0-9]+ \\(dark\\) to 0\\.[0-9]+ \\(light\\)</title>"
   ARGS render --periodic 2,2 ${TOOL_OUT}/stats_periodic_fill/p.csv --cells -o ${O}/u.svg --width 300)
 set_tests_properties(tool.render_cells PROPERTIES FIXTURES_REQUIRED periodic_fill_csv)
 set(O ${TOOL_OUT}/render_cells_none)

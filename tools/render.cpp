@@ -292,6 +292,19 @@ std::vector<frontpack::Disk> periodic_images(const frontpack::Domain& domain, st
   return images;
 }
 
+// The least and the largest coverage of the map's interior cells (infinity, -infinity for none).
+std::pair<double, double> coverage_range(const frontpack::CellCoverage& c) {
+  double lo = std::numeric_limits<double>::infinity();
+  double hi = -lo;
+  for (const double v : c.map) {
+    if (!std::isnan(v)) {
+      lo = std::min(lo, v);
+      hi = std::max(hi, v);
+    }
+  }
+  return {lo, hi};
+}
+
 // The cells of the map, each a square filled by its coverage (the caller clips to the domain: in a
 // periodic cell the last column or row of cells reaches past the period).
 void draw_cells(cairo_t* cr, const View& view, const frontpack::CellCoverage& c) {
@@ -448,14 +461,13 @@ std::optional<Picture> picture_from_path(const std::filesystem::path& path) {
   return ext.size() > 1 ? picture_from_name(std::string_view(ext).substr(1)) : std::nullopt;
 }
 
-std::pair<double, double> coverage_range(const frontpack::CellCoverage& cells) {
-  double lo = std::numeric_limits<double>::quiet_NaN();
-  double hi = lo;
-  for (const double v : cells.map) {
-    lo = std::isnan(v) ? lo : std::isnan(lo) ? v : std::min(lo, v);
-    hi = std::isnan(v) ? hi : std::isnan(hi) ? v : std::max(hi, v);
+std::string cells_key(const frontpack::CellCoverage& cells) {
+  if (cells.cells == 0) {
+    return "no interior cell";
   }
-  return {lo, hi};
+  const auto [lo, hi] = coverage_range(cells);
+  return std::to_string(cells.cells) + " interior cells of side " + fmt(cells.cell_side) + ", coverage " + fmt4(lo) +
+         " (dark) to " + fmt4(hi) + " (light)";
 }
 
 int histogram_height(int width_px) {
@@ -487,11 +499,7 @@ void render(frontpack::OutputFile& out, Picture format, const frontpack::Domain&
   std::optional<render_parts::Panel> histogram;
   std::string caption;
   if (options.cells) {
-    const auto [lo, hi] = coverage_range(*options.cells);
-    caption = options.cells->cells == 0
-                  ? std::string("frontpack cell coverage: no interior cell")
-                  : "frontpack cell coverage: " + std::to_string(options.cells->cells) + " interior cells of side " +
-                        fmt(options.cells->cell_side) + ", from " + fmt4(lo) + " (dark) to " + fmt4(hi) + " (light)";
+    caption = "frontpack cell coverage: " + cells_key(*options.cells);
   } else if (options.histogram) {
     histogram = render_parts::make_panel(disks, options);
     caption.append("frontpack packing. ").append(histogram->caption[0]);

@@ -7,7 +7,6 @@
 #include <span>
 #include <stop_token>
 #include <string>
-#include <utility>
 
 #include "frontpack/domain.hpp"
 #include "frontpack/geometry.hpp"
@@ -45,8 +44,9 @@ struct RenderOptions {
   std::stop_token stop{};
 };
 
-/// The least and the largest coverage of the map's interior cells (NaN, NaN if there is none).
-[[nodiscard]] std::pair<double, double> coverage_range(const frontpack::CellCoverage& cells);
+/// What the colours of a map drawn by render() (options.cells) stand for: "N interior cells of
+/// side S, coverage LO (dark) to HI (light)", or "no interior cell".
+[[nodiscard]] std::string cells_key(const frontpack::CellCoverage& cells);
 
 /// Height of the size-distribution panel for a picture width: width / 4 + 6 font sizes, the font
 /// size being width / 80 clamped to [10, 18] px; integer arithmetic (tests/tool_tests.cmake

@@ -2,6 +2,7 @@
 #include <pybind11/stl.h>
 
 #include <optional>
+#include <utility>
 
 #include "bind.hpp"
 
@@ -55,7 +56,7 @@ py::dict sizes_dict(const SizeStats& s) {
   return d;
 }
 
-py::dict stats_dict(const PackingStats& s) {
+py::dict stats_dict(PackingStats&& s) {
   py::dict d;
   d["disks"] = s.disks;
   d["domain_area"] = s.domain_area;
@@ -120,8 +121,7 @@ py::dict stats_dict(const PackingStats& s) {
   cells["sd"] = s.cell_coverage.sd;
   cells["origin"] = py::make_tuple(s.cell_coverage.origin.x, s.cell_coverage.origin.y);
   // (ny, nx): map[j, i] is the cell at origin + (i, j) cell_side, NaN outside the interior.
-  std::vector<double> map = s.cell_coverage.map;
-  cells["map"] = grid_array(std::move(map), s.cell_coverage.ny, s.cell_coverage.nx);
+  cells["map"] = grid_array(std::move(s.cell_coverage.map), s.cell_coverage.ny, s.cell_coverage.nx);
   d["cell_coverage"] = cells;
   d["sizes"] = sizes_dict(s.sizes);
   return d;
@@ -155,7 +155,7 @@ void bind_stats(py::module_& m) {
           py::gil_scoped_release release;
           s = measure(domain, ds, o);
         }
-        return stats_dict(s);
+        return stats_dict(std::move(s));
       },
       py::arg("domain"), py::arg("disks"), py::kw_only(), py::arg("requested") = py::none(),
       py::arg("contact_gap") = 0.0, py::arg("band_width") = 0.0, py::arg("samples") = std::size_t{1'000'000},

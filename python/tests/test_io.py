@@ -177,7 +177,7 @@ def test_render_cells(tmp_path):
     (tmp_path / "sq.wkt").write_text("POLYGON((0 0,1 0,1 1,0 1,0 0))\n")
     out = subprocess.run([tool, "render", str(tmp_path / "sq.wkt"), str(tmp_path / "d.csv"), "--cells", "--width",
                           "300", "-o", str(tmp_path / "c.png")], capture_output=True, text=True, check=True)
-    assert "36 cells of side 0.125, coverage 0.7363 (dark) to 0.7854 (light)" in out.stderr
+    assert "36 interior cells of side 0.125, coverage 0.7363 (dark) to 0.7854 (light)" in out.stderr
     img = matplotlib_image.imread(tmp_path / "c.png")
     assert img.shape[:2] == (300, 300)
 

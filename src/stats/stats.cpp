@@ -117,10 +117,10 @@ std::vector<double> hole_radii(const StatsOptions& options, const PackingStats& 
 
 // How far from a periodic cell the images of the disks must reach for the measures asked for:
 // rmax for the sampling (a disk covering a point of the cell), 2 rmax + the contact gap for the
-// contacts, the cells' side + rmax for the cell coverage (a square reaching across a side, and a disk), and
-// for the clearance rmax + its grid's side (about 2 mean radii) + the largest value of f that
-// matters: 2 rmax for the largest empty circle's first try (measure_voids() widens the images
-// when it is larger), or the largest hole radius (f is at most half the cell's diagonal).
+// contacts, the cells' side + rmax for the cell coverage (a square reaching across a side, and a
+// disk), and for the clearance rmax + its grid's side (about 2 mean radii) + the largest value of
+// f that matters: 2 rmax for the largest empty circle's first try (measure_voids() widens the
+// images when it is larger), or the largest hole radius (f is at most half the cell's diagonal).
 double image_reach(const StatsOptions& options, const PackingStats& s, std::span<const double> radii,
                    const detail::Periods& periods) {
   const double rmax = s.sizes.rmax;

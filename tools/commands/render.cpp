@@ -37,19 +37,6 @@ struct RenderArgs {
   bool quiet = false;
 };
 
-// ", N cells of side S, coverage LO (dark) to HI (light)" for --cells, else nothing.
-std::string cells_note(const frontpack_tool::RenderOptions& picture) {
-  if (!picture.cells) {
-    return {};
-  }
-  const frontpack::CellCoverage& c = *picture.cells;
-  const auto [lo, hi] = frontpack_tool::coverage_range(c);
-  return c.cells == 0
-             ? std::string(", no interior cell")
-             : ", " + std::to_string(c.cells) + " cells of side " + frontpack_tool::fmt(c.cell_side) + ", coverage " +
-                   frontpack_tool::fmt4(lo) + " (dark) to " + frontpack_tool::fmt4(hi) + " (light)";
-}
-
 int run_render(RenderArgs& a) {
   resolve(a.in);
   frontpack_tool::RenderOptions picture;
@@ -65,7 +52,7 @@ int run_render(RenderArgs& a) {
   const frontpack::Domain domain = load(a.in.domain);
   const std::vector<frontpack::Disk> disks = read_disks(a.in);
   if (a.cells) {
-    // The cell coverage alone (exact areas, no sampling): about a second per million disks.
+    // The cell coverage alone (exact areas, no sampling).
     frontpack::StatsOptions so;
     so.samples = 0;
     so.contacts = false;
@@ -85,7 +72,8 @@ int run_render(RenderArgs& a) {
     for (const auto& o : outputs) {
       std::cerr << "wrote:       " << o.path.string() << " (" << frontpack_tool::format_name(o.format) << ", "
                 << a.width << " x " << frontpack_tool::picture_height(domain, a.width, picture.histogram) << ", "
-                << disks.size() << " disks" << cells_note(picture) << ")\n";
+                << disks.size() << " disks" << (picture.cells ? ", " + frontpack_tool::cells_key(*picture.cells) : "")
+                << ")\n";
     }
   }
   return ok;
