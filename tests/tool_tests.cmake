@@ -302,6 +302,21 @@ set_tests_properties(tool.render_cells PROPERTIES FIXTURES_REQUIRED periodic_fil
 set(O ${TOOL_OUT}/render_cells_none)
 frontpack_tool_check(render_cells_none 0 "wrote: .*u\\.png \\(png, 300 x 300, 5 disks, no interior cell\\)" PNG ${O}/u.png 300 300
   ARGS render ${SQ} ${TD}/good.csv --cells -o ${O}/u.png --width 300)
+# render --cells-range: the scale's ends fixed (the torus's cells lie between them), the cells' own
+# least and largest after them; refused out of order, with a word for a number, or without --cells,
+# and then no picture.
+set(O ${TOOL_OUT}/render_cells_range)
+frontpack_tool_check(render_cells_range 0 "coverage 0\\.6000 \\(dark\\) to 0\\.9500 \\(light\\), the cells' 0\\.[6-9][0-9]+ to 0\\.[6-9][0-9]+\\)"
+  FILE_MATCHES ${O}/u.svg "<title>frontpack cell coverage: 49 interior cells of side 0\\.3[0-9]*, coverage 0\\.6000 \\(dark\\) to 0\\.9500 \\(light\\), the cells' 0\\.[6-9][0-9]+ to 0\\.[6-9][0-9]+</title>"
+  ARGS render --periodic 2,2 ${TOOL_OUT}/stats_periodic_fill/p.csv --cells --cells-range 0.6,0.95 -o ${O}/u.svg --width 300)
+set_tests_properties(tool.render_cells_range PROPERTIES FIXTURES_REQUIRED periodic_fill_csv)
+set(O ${TOOL_OUT}/render_cells_range_bad)
+frontpack_tool_check(render_cells_range_order 5 "--cells-range '0\\.9,0\\.8': expected LO,HI with LO < HI" NO_FILES ${O}/a.png
+  ARGS render ${SQ} ${TD}/good.csv --cells --cells-range 0.9,0.8 -o ${O}/a.png)
+frontpack_tool_check(render_cells_range_number 5 "--cells-range '0\\.7,abc': 'abc' is not a finite number; expected LO,HI"
+  NO_FILES ${O}/b.png ARGS render ${SQ} ${TD}/good.csv --cells --cells-range 0.7,abc -o ${O}/b.png)
+frontpack_tool_check(render_cells_range_needs_cells 1 "--cells-range requires --cells" NO_FILES ${O}/c.png
+  ARGS render ${SQ} ${TD}/good.csv --cells-range 0.7,0.8 -o ${O}/c.png)
 frontpack_tool_check(stats_bad_cell_side 5 "--cell-side '-0\\.5': expected a finite number > 0"
   ARGS stats ${SQ} ${TD}/good.csv --cell-side=-0.5)
 frontpack_tool_check(fill_json_unwritable 2 "cannot write '/nonexistent/dir/s\\.json'"

@@ -74,6 +74,26 @@ void add_periodic_options(CLI::App& cmd, DomainSource& src) {
   }
 }
 
+std::vector<double> finite_numbers(const std::string& text, const std::string& given, std::string_view expected) {
+  std::vector<double> values;
+  std::size_t begin = 0;
+  while (true) {
+    const std::size_t comma = std::min(text.find(',', begin), text.size());
+    const std::string_view item = std::string_view(text).substr(begin, comma - begin);
+    double value = 0;
+    const auto [end, ec] = std::from_chars(item.data(), item.data() + item.size(), value);
+    if (item.empty() || ec != std::errc{} || end != item.data() + item.size() || !std::isfinite(value)) {
+      throw frontpack::OptionError(given + ": '" + std::string(item.substr(0, 40)) +
+                                   "' is not a finite number; expected " + std::string(expected));
+    }
+    values.push_back(value);
+    if (comma == text.size()) {
+      return values;
+    }
+    begin = comma + 1;
+  }
+}
+
 frontpack::Domain periodic_domain(const std::string& text, const std::string& axes) {
   frontpack::Periodicity periodicity = frontpack::Periodicity::none;
   if (axes == "xy") {
@@ -84,23 +104,7 @@ frontpack::Domain periodic_domain(const std::string& text, const std::string& ax
     throw frontpack::OptionError("--periodic-axes '" + axes.substr(0, 40) + "': expected xy or x");
   }
   const std::string given = "--periodic '" + (text.size() > 80 ? text.substr(0, 80) + "..." : text) + "'";
-  std::vector<double> values;
-  std::size_t begin = 0;
-  while (true) {
-    const std::size_t comma = std::min(text.find(',', begin), text.size());
-    const std::string_view item = std::string_view(text).substr(begin, comma - begin);
-    double value = 0;
-    const auto [end, ec] = std::from_chars(item.data(), item.data() + item.size(), value);
-    if (item.empty() || ec != std::errc{} || end != item.data() + item.size() || !std::isfinite(value)) {
-      throw frontpack::OptionError(given + ": '" + std::string(item.substr(0, 40)) +
-                                   "' is not a finite number; expected LX,LY or XMIN,YMIN,XMAX,YMAX");
-    }
-    values.push_back(value);
-    if (comma == text.size()) {
-      break;
-    }
-    begin = comma + 1;
-  }
+  const std::vector<double> values = finite_numbers(text, given, "LX,LY or XMIN,YMIN,XMAX,YMAX");
   frontpack::Box cell;
   if (values.size() == 2) {
     cell = frontpack::Box{0, 0, values[0], values[1]};

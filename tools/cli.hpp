@@ -10,6 +10,7 @@
 #include <functional>
 #include <stop_token>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "frontpack/frontpack.hpp"
@@ -85,6 +86,12 @@ void add_domain_source_options(CLI::App& cmd, DomainSource& src);
 /// --periodic and --periodic-axes (excluding --wkt when that is registered first): the domain is a
 /// periodic cell, periodic_domain(src.periodic, src.periodic_axes).
 void add_periodic_options(CLI::App& cmd, DomainSource& src);
+
+/// The comma-separated numbers of an option's value, as std::from_chars reads them. Throws
+/// OptionError "GIVEN: 'ITEM' is not a finite number; expected EXPECTED" for an item that is not
+/// one (an empty item included).
+[[nodiscard]] std::vector<double> finite_numbers(const std::string& text, const std::string& given,
+                                                 std::string_view expected);
 
 /// The periodic cell of `--periodic TEXT --periodic-axes AXES`: TEXT is "LX,LY" (the cell
 /// [0, LX) x [0, LY)) or "XMIN,YMIN,XMAX,YMAX"; numbers as std::from_chars reads them, finite;

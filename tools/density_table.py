@@ -367,57 +367,25 @@ def quality_pictures(tool, label, out_dir, log):
 SEAM_MAP_RADIUS = "discrete:0.005:0.5,0.007:0.5"  # bidisperse 1:1.4 on the plate: about 45,000 disks
 SEAM_MAP_METHODS = ("closed", "boundary", JAM_METHOD)
 SEAM_MAP_RANGE = (0.70, 0.86)  # the coverage from dark to light
-SEAM_MAP_PIXELS = 6  # per cell
-
-
-def colour(t):
-    """t in [0, 1] to RGB along dark blue -> teal -> yellow (a viridis-like ramp)."""
-    stops = ((0.0, (68, 1, 84)), (0.5, (33, 145, 140)), (1.0, (253, 231, 37)))
-    for (t0, c0), (t1, c1) in zip(stops, stops[1:]):
-        if t <= t1:
-            u = (t - t0) / (t1 - t0)
-            return tuple(round(a + (b - a) * u) for a, b in zip(c0, c1))
-    return stops[-1][1]
-
-
-def write_png(path, rows):
-    """rows: lists of (r, g, b), top row first; an 8-bit RGB PNG (zlib and struct only)."""
-    import struct
-    import zlib
-    height, width = len(rows), len(rows[0])
-    raw = b"".join(b"\0" + bytes(v for px in row for v in px) for row in rows)
-
-    def chunk(kind, data):
-        return struct.pack(">I", len(data)) + kind + data + struct.pack(">I", zlib.crc32(kind + data) & 0xFFFFFFFF)
-
-    with open(path, "wb") as f:
-        f.write(b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", struct.pack(">IIBBBBB", width, height, 8, 2, 0, 0, 0))
-                + chunk(b"IDAT", zlib.compress(raw, 9)) + chunk(b"IEND", b""))
+SEAM_MAP_WIDTH = 540  # pixels
 
 
 def seam_maps(tool, out_dir, log):
-    """docs/img/seams-METHOD.png: the cell coverage's map (cell_coverage.map of fill --json) of the
-    plate at bidisperse 1:1.4, seed 1, each cell of 8 rmax a square of SEAM_MAP_PIXELS, coloured
-    from SEAM_MAP_RANGE[0] (dark) to [1] (light), white outside the interior."""
+    """docs/img/seams-METHOD.png: the cell coverage's map of the plate at bidisperse 1:1.4, seed 1,
+    drawn by `frontpack render --cells`, each cell of 8 rmax coloured from SEAM_MAP_RANGE[0] (dark)
+    to [1] (light) on every picture, so that the three compare."""
     os.makedirs(out_dir, exist_ok=True)
     plate = os.path.join(ROOT, "shapes", NARROW_SHAPE)
-    lo, hi = SEAM_MAP_RANGE
+    cells_range = "%g,%g" % SEAM_MAP_RANGE
     with tempfile.TemporaryDirectory(prefix="seam_maps_") as workdir:
         for method in SEAM_MAP_METHODS:
-            #   frontpack fill shapes/plate_with_holes.wkt --method M [--jam] --radius SEAM_MAP_RADIUS --seed 1 --json s.json
-            j, _ = fill(tool, plate, method, SEAM_MAP_RADIUS, PICTURE_SEED, workdir)
+            #   frontpack fill shapes/plate_with_holes.wkt --method M [--jam] --radius SEAM_MAP_RADIUS --seed 1 --json s.json -o d.csv
+            #   frontpack render shapes/plate_with_holes.wkt d.csv --cells --cells-range 0.7,0.86 -o seams-M.png --width 540
+            j, csv = fill(tool, plate, method, SEAM_MAP_RADIUS, PICTURE_SEED, workdir)
             c = j["cell_coverage"]
-            nx, ny, values = c["nx"], c["ny"], c["map"]
-            rows = []
-            for row in range(ny - 1, -1, -1):
-                line = []
-                for i in range(nx):
-                    v = values[row * nx + i]
-                    px = (255, 255, 255) if v is None else colour(min(max((v - lo) / (hi - lo), 0.0), 1.0))
-                    line.extend([px] * SEAM_MAP_PIXELS)
-                rows.extend([line] * SEAM_MAP_PIXELS)
             png = os.path.join(out_dir, "seams-%s.png" % method.replace("+", "-"))
-            write_png(png, rows)
+            run([tool, "render", plate, csv, "--cells", "--cells-range", cells_range, "-o", png, "--width",
+                 str(SEAM_MAP_WIDTH), "-q"])
             log("%s: %d disks, interior %.4f, cells %d: p1 %.4f, p5 %.4f, median %.4f, sd %.4f"
                 % (png, j["disks"], j["interior_fraction"], c["cells"], c["p1"], c["p5"], c["p50"], c["sd"]))
 

@@ -307,8 +307,9 @@ std::pair<double, double> coverage_range(const frontpack::CellCoverage& c) {
 
 // The cells of the map, each a square filled by its coverage (the caller clips to the domain: in a
 // periodic cell the last column or row of cells reaches past the period).
-void draw_cells(cairo_t* cr, const View& view, const frontpack::CellCoverage& c) {
-  const auto [lo, hi] = coverage_range(c);
+void draw_cells(cairo_t* cr, const View& view, const frontpack::CellCoverage& c,
+                const std::optional<std::array<double, 2>>& range) {
+  const auto [lo, hi] = range ? std::pair{(*range)[0], (*range)[1]} : coverage_range(c);
   for (std::size_t j = 0; j < c.ny; ++j) {
     for (std::size_t i = 0; i < c.nx; ++i) {
       const double v = c.map[j * c.nx + i];
@@ -326,8 +327,9 @@ void draw_cells(cairo_t* cr, const View& view, const frontpack::CellCoverage& c)
 }
 
 void draw(cairo_t* cr, const View& view, Picture format, const frontpack::Domain& domain,
-          std::span<const frontpack::Disk> disks, std::span<const frontpack::Disk> images,
-          const std::optional<frontpack::CellCoverage>& cells, int width_px, int height_px) {
+          std::span<const frontpack::Disk> disks, std::span<const frontpack::Disk> images, const RenderOptions& options,
+          int width_px, int height_px) {
+  const std::optional<frontpack::CellCoverage>& cells = options.cells;
   cairo_set_source_rgb(cr, 1, 1, 1);
   cairo_paint(cr);
 
@@ -360,7 +362,7 @@ void draw(cairo_t* cr, const View& view, Picture format, const frontpack::Domain
     domain_path();
     cairo_clip(cr);
     cairo_set_antialias(cr, CAIRO_ANTIALIAS_NONE);  // no seam of blended pixels between two cells
-    draw_cells(cr, view, *cells);
+    draw_cells(cr, view, *cells, options.cells_range);
     cairo_restore(cr);
   } else if (!images.empty()) {
     // Lighter: the images drawn on a group painted at a third of their opacity.
@@ -461,13 +463,18 @@ std::optional<Picture> picture_from_path(const std::filesystem::path& path) {
   return ext.size() > 1 ? picture_from_name(std::string_view(ext).substr(1)) : std::nullopt;
 }
 
-std::string cells_key(const frontpack::CellCoverage& cells) {
+std::string cells_key(const frontpack::CellCoverage& cells, const std::optional<std::array<double, 2>>& range) {
   if (cells.cells == 0) {
     return "no interior cell";
   }
   const auto [lo, hi] = coverage_range(cells);
-  return std::to_string(cells.cells) + " interior cells of side " + fmt(cells.cell_side) + ", coverage " + fmt4(lo) +
-         " (dark) to " + fmt4(hi) + " (light)";
+  const std::string head =
+      std::to_string(cells.cells) + " interior cells of side " + fmt(cells.cell_side) + ", coverage ";
+  if (range) {
+    return head + fmt4((*range)[0]) + " (dark) to " + fmt4((*range)[1]) + " (light), the cells' " + fmt4(lo) + " to " +
+           fmt4(hi);
+  }
+  return head + fmt4(lo) + " (dark) to " + fmt4(hi) + " (light)";
 }
 
 int histogram_height(int width_px) {
@@ -499,7 +506,7 @@ void render(frontpack::OutputFile& out, Picture format, const frontpack::Domain&
   std::optional<render_parts::Panel> histogram;
   std::string caption;
   if (options.cells) {
-    caption = "frontpack cell coverage: " + cells_key(*options.cells);
+    caption = "frontpack cell coverage: " + cells_key(*options.cells, options.cells_range);
   } else if (options.histogram) {
     histogram = render_parts::make_panel(disks, options);
     caption.append("frontpack packing. ").append(histogram->caption[0]);
@@ -529,7 +536,7 @@ void render(frontpack::OutputFile& out, Picture format, const frontpack::Domain&
     const Context cr(cairo_create(surface.get()));
     const std::vector<frontpack::Disk> images =
         options.images ? periodic_images(domain, disks) : std::vector<frontpack::Disk>{};
-    draw(cr.get(), view, format, domain, disks, images, options.cells, width, height);
+    draw(cr.get(), view, format, domain, disks, images, options, width, height);
     if (options.stop.stop_requested()) {
       throw frontpack::CancelledError();
     }

@@ -2,6 +2,7 @@
 // library stays free of Cairo.
 #pragma once
 
+#include <array>
 #include <filesystem>
 #include <optional>
 #include <span>
@@ -37,16 +38,23 @@ struct RenderOptions {
   bool images = false;
   /// Draw this map of the cell coverage (PackingStats::cell_coverage) instead of the disks: each
   /// interior cell filled with viridis from the map's least coverage (dark) to its largest
-  /// (light), clipped to the domain; seams and sparse patches show as dark cells. The panel below,
-  /// which keys the disks' colours, is left out (histogram is taken as false).
+  /// (light), or over cells_range, clipped to the domain; seams and sparse patches show as dark
+  /// cells. The panel below, which keys the disks' colours, is left out (histogram is taken as
+  /// false).
   std::optional<frontpack::CellCoverage> cells{};
+  /// With cells: the coverage drawn darkest and lightest, [0] < [1] (a cell beyond them is drawn as
+  /// the nearer one), so that maps of different packings compare colour for colour; unset, the
+  /// map's own least and largest coverage.
+  std::optional<std::array<double, 2>> cells_range{};
   /// Once a stop is requested, render() throws frontpack::CancelledError.
   std::stop_token stop{};
 };
 
 /// What the colours of a map drawn by render() (options.cells) stand for: "N interior cells of
-/// side S, coverage LO (dark) to HI (light)", or "no interior cell".
-[[nodiscard]] std::string cells_key(const frontpack::CellCoverage& cells);
+/// side S, coverage LO (dark) to HI (light)", or "no interior cell". With a `range`, LO and HI are
+/// its ends, followed by ", the cells' A to B" (the map's own least and largest).
+[[nodiscard]] std::string cells_key(const frontpack::CellCoverage& cells,
+                                    const std::optional<std::array<double, 2>>& range = std::nullopt);
 
 /// Height of the size-distribution panel for a picture width: width / 4 + 6 font sizes, the font
 /// size being width / 80 clamped to [10, 18] px; integer arithmetic (tests/tool_tests.cmake

@@ -191,6 +191,16 @@ def test_render_cells(tmp_path):
                 assert cell(i, j) == (253, 231, 37), (i, j)  # viridis at 1
     assert cell(0, 0) == cell(7, 7) == (230, 230, 230)
 
+    # --cells-range: the gap's cell (pi / 4 * 15 / 16 = 0.73631) halfway from 0.70 to 0.77262, so
+    # viridis at 0.5; the others (pi / 4 = 0.78540) beyond the light end, so viridis at 1.
+    out = subprocess.run([tool, "render", str(tmp_path / "sq.wkt"), str(tmp_path / "d.csv"), "--cells",
+                          "--cells-range=0.70,0.77262", "--width", "300", "-o", str(tmp_path / "c.png")],
+                         capture_output=True, text=True, check=True)
+    assert "coverage 0.7000 (dark) to 0.7726 (light), the cells' 0.7363 to 0.7854" in out.stderr
+    img = matplotlib_image.imread(tmp_path / "c.png")
+    assert cell(2, 3) == (38, 130, 142)  # viridis at 0.5
+    assert cell(5, 5) == cell(1, 6) == (253, 231, 37)
+
 
 def test_deck_and_wall_disks(packing):
     walls = frontpack.wall_disks(DOMAIN, 0.01, 0.01)

@@ -2,6 +2,7 @@
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
+#include <array>
 #include <charconv>
 #include <cmath>
 #include <cstdint>
@@ -34,6 +35,8 @@ struct RenderArgs {
   bool no_histogram = false;
   bool images = false;
   bool cells = false;
+  std::string cells_range;
+  CLI::Option* cells_option = nullptr;
   bool quiet = false;
 };
 
@@ -43,6 +46,15 @@ int run_render(RenderArgs& a) {
   picture.width_px = a.width;
   picture.histogram = !a.no_histogram;
   picture.images = a.images;
+  if (!a.cells_range.empty()) {
+    const std::string given =
+        "--cells-range '" + (a.cells_range.size() > 80 ? a.cells_range.substr(0, 80) + "..." : a.cells_range) + "'";
+    const std::vector<double> ends = finite_numbers(a.cells_range, given, "LO,HI");
+    if (ends.size() != 2 || !(ends[0] < ends[1])) {
+      throw frontpack::OptionError(given + ": expected LO,HI with LO < HI");
+    }
+    picture.cells_range = std::array<double, 2>{ends[0], ends[1]};
+  }
   if (!a.radius.empty()) {
     picture.requested = frontpack::parse_radii(a.radius);
     picture.requested_spec = a.radius;
@@ -72,7 +84,8 @@ int run_render(RenderArgs& a) {
     for (const auto& o : outputs) {
       std::cerr << "wrote:       " << o.path.string() << " (" << frontpack_tool::format_name(o.format) << ", "
                 << a.width << " x " << frontpack_tool::picture_height(domain, a.width, picture.histogram) << ", "
-                << disks.size() << " disks" << (picture.cells ? ", " + frontpack_tool::cells_key(*picture.cells) : "")
+                << disks.size() << " disks"
+                << (picture.cells ? ", " + frontpack_tool::cells_key(*picture.cells, picture.cells_range) : "")
                 << ")\n";
     }
   }
@@ -97,9 +110,14 @@ Command add_render(CLI::App& app) {
   cmd->add_flag("--images", args->images,
                 "with --periodic: also draw, lighter, the images of the disks that cross a periodic side")
       ->needs(args->in.domain.periodic_option);
-  cmd->add_flag("--cells", args->cells,
-                "draw the coverage of the interior cells of side 8 rmax instead of the disks (dark: the least, light: "
-                "the largest; seams and sparse patches show dark), without the panel");
+  args->cells_option =
+      cmd->add_flag("--cells", args->cells,
+                    "draw the coverage of the interior cells of side 8 rmax instead of the disks (dark: the least, "
+                    "light: the largest; seams and sparse patches show dark), without the panel");
+  cmd->add_option("--cells-range", args->cells_range,
+                  "with --cells: LO,HI, the coverage drawn darkest and lightest instead of the map's own least and "
+                  "largest (beyond them, as dark or as light), so that maps of different packings compare")
+      ->needs(args->cells_option);
   cmd->add_flag("-q,--quiet", args->quiet, "print nothing but errors");
   cmd->footer(
       "Example:\n"
