@@ -74,7 +74,12 @@ void add_periodic_options(CLI::App& cmd, DomainSource& src) {
   }
 }
 
-std::vector<double> finite_numbers(const std::string& text, const std::string& given, std::string_view expected) {
+std::string given_value(std::string_view option, const std::string& text) {
+  return std::string(option) + " '" + (text.size() > 80 ? text.substr(0, 80) + "..." : text) + "'";
+}
+
+std::vector<double> finite_numbers(std::string_view option, const std::string& text, std::string_view expected) {
+  const std::string given = given_value(option, text);
   std::vector<double> values;
   std::size_t begin = 0;
   while (true) {
@@ -103,8 +108,8 @@ frontpack::Domain periodic_domain(const std::string& text, const std::string& ax
   } else {
     throw frontpack::OptionError("--periodic-axes '" + axes.substr(0, 40) + "': expected xy or x");
   }
-  const std::string given = "--periodic '" + (text.size() > 80 ? text.substr(0, 80) + "..." : text) + "'";
-  const std::vector<double> values = finite_numbers(text, given, "LX,LY or XMIN,YMIN,XMAX,YMAX");
+  const std::string given = given_value("--periodic", text);
+  const std::vector<double> values = finite_numbers("--periodic", text, "LX,LY or XMIN,YMIN,XMAX,YMAX");
   frontpack::Box cell;
   if (values.size() == 2) {
     cell = frontpack::Box{0, 0, values[0], values[1]};

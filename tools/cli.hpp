@@ -87,10 +87,13 @@ void add_domain_source_options(CLI::App& cmd, DomainSource& src);
 /// periodic cell, periodic_domain(src.periodic, src.periodic_axes).
 void add_periodic_options(CLI::App& cmd, DomainSource& src);
 
+/// "OPTION 'TEXT'", TEXT cut to 80 characters: how an error message names an option's value.
+[[nodiscard]] std::string given_value(std::string_view option, const std::string& text);
+
 /// The comma-separated numbers of an option's value, as std::from_chars reads them. Throws
-/// OptionError "GIVEN: 'ITEM' is not a finite number; expected EXPECTED" for an item that is not
-/// one (an empty item included).
-[[nodiscard]] std::vector<double> finite_numbers(const std::string& text, const std::string& given,
+/// OptionError "OPTION 'TEXT': 'ITEM' is not a finite number; expected EXPECTED" for an item that
+/// is not one (an empty item included).
+[[nodiscard]] std::vector<double> finite_numbers(std::string_view option, const std::string& text,
                                                  std::string_view expected);
 
 /// The periodic cell of `--periodic TEXT --periodic-axes AXES`: TEXT is "LX,LY" (the cell

@@ -36,7 +36,6 @@ struct RenderArgs {
   bool images = false;
   bool cells = false;
   std::string cells_range;
-  CLI::Option* cells_option = nullptr;
   bool quiet = false;
 };
 
@@ -47,11 +46,9 @@ int run_render(RenderArgs& a) {
   picture.histogram = !a.no_histogram;
   picture.images = a.images;
   if (!a.cells_range.empty()) {
-    const std::string given =
-        "--cells-range '" + (a.cells_range.size() > 80 ? a.cells_range.substr(0, 80) + "..." : a.cells_range) + "'";
-    const std::vector<double> ends = finite_numbers(a.cells_range, given, "LO,HI");
+    const std::vector<double> ends = finite_numbers("--cells-range", a.cells_range, "LO,HI");
     if (ends.size() != 2 || !(ends[0] < ends[1])) {
-      throw frontpack::OptionError(given + ": expected LO,HI with LO < HI");
+      throw frontpack::OptionError(given_value("--cells-range", a.cells_range) + ": expected LO,HI with LO < HI");
     }
     picture.cells_range = std::array<double, 2>{ends[0], ends[1]};
   }
@@ -110,14 +107,14 @@ Command add_render(CLI::App& app) {
   cmd->add_flag("--images", args->images,
                 "with --periodic: also draw, lighter, the images of the disks that cross a periodic side")
       ->needs(args->in.domain.periodic_option);
-  args->cells_option =
+  CLI::Option* cells =
       cmd->add_flag("--cells", args->cells,
                     "draw the coverage of the interior cells of side 8 rmax instead of the disks (dark: the least, "
                     "light: the largest; seams and sparse patches show dark), without the panel");
   cmd->add_option("--cells-range", args->cells_range,
                   "with --cells: LO,HI, the coverage drawn darkest and lightest instead of the map's own least and "
                   "largest (beyond them, as dark or as light), so that maps of different packings compare")
-      ->needs(args->cells_option);
+      ->needs(cells);
   cmd->add_flag("-q,--quiet", args->quiet, "print nothing but errors");
   cmd->footer(
       "Example:\n"
