@@ -30,7 +30,7 @@ frontpack_tool_test(fill_boundary 0 "boundary form.*certified: [0-9]+ generated,
 frontpack_tool_test(fill_bad_radius 5 "rmin \\(0.2\\) must not exceed rmax \\(0.1\\)" fill ${S}/l_shape.wkt --radius uniform:0.2,0.1)
 frontpack_tool_test(fill_bad_radius_syntax 5 "expected uniform:RMIN,RMAX or constant:R" fill ${S}/l_shape.wkt --radius gauss:1)
 frontpack_tool_test(fill_nan_radius 5 "must be a finite number > 0" fill ${S}/l_shape.wkt --radius constant:nan)
-frontpack_tool_test(fill_bad_method 5 "--method diagonal: expected closed, open or boundary" fill ${S}/l_shape.wkt --method diagonal)
+frontpack_tool_test(fill_bad_method 5 "--method 'diagonal': expected closed, open or boundary" fill ${S}/l_shape.wkt --method diagonal)
 frontpack_tool_test(fill_bad_format 5 "unknown format '.xyz'" fill ${S}/l_shape.wkt -o out.xyz)
 frontpack_tool_test(fill_unwritable 2 "cannot write '/nonexistent/dir/p.csv': No such file or directory" fill ${S}/l_shape.wkt -o /nonexistent/dir/p.csv)
 frontpack_tool_test(fill_too_many 5 "would generate about [0-9]+ disks, more than max_disks" fill ${S}/unit_square.wkt --radius constant:1e-5)
@@ -98,7 +98,7 @@ frontpack_tool_check(fill_quiet 0 "" SILENT FILES ${O}/q.csv ${O}/q.json
 set(O ${TOOL_OUT}/fill_format_option)
 frontpack_tool_check(fill_format_option 0 "wrote: .*out\\.dat \\(yade\\)" FILES ${O}/out.dat
   ARGS fill ${S}/l_shape.wkt --radius uniform:0.02,0.08 --format yade -o ${O}/out.dat)
-frontpack_tool_check(fill_unknown_format_option 5 "--format bogus: unknown format; expected csv, yade, lammps, vtp, png, svg or pdf"
+frontpack_tool_check(fill_unknown_format_option 5 "--format 'bogus': unknown format; expected csv, yade, lammps, vtp, png, svg or pdf"
   NO_FILES ${TOOL_OUT}/fill_unknown_format_option/p.csv
   ARGS fill ${S}/l_shape.wkt --format bogus -o ${TOOL_OUT}/fill_unknown_format_option/p.csv)
 frontpack_tool_check(fill_no_extension 5 "no file extension to tell the format by"
@@ -157,7 +157,7 @@ frontpack_tool_check(check_dump_timestep 0 "disks: +5 .*result: +certified"
 frontpack_tool_check(check_dump_no_timestep 7
   "two_snapshots\\.dump:29: no snapshot of timestep 7 \\(the dump has 2 snapshots: timesteps 0, 100\\)"
   ARGS check --timestep 7 ${SQ} ${TD}/two_snapshots.dump)
-frontpack_tool_check(check_bad_timestep 5 "--timestep 1\\.5: expected a whole number" ARGS check --timestep 1.5 ${SQ} ${TD}/two_snapshots.dump)
+frontpack_tool_check(check_bad_timestep 5 "--timestep '1\\.5': expected a whole number" ARGS check --timestep 1.5 ${SQ} ${TD}/two_snapshots.dump)
 frontpack_tool_check(check_vtp_wkt 0 "disks: +5 .*result: +certified" ARGS check --wkt ${SQ_WKT} ${TD}/good.vtp)
 frontpack_tool_check(check_vtp_radius_array 7 "good\\.vtp:4: <Piece>: no point data array 'size' for the radii \\(point data arrays: 'Radius'\\)"
   ARGS check ${SQ} ${TD}/good.vtp --radius-array size)
@@ -405,10 +405,10 @@ frontpack_tool_test(fill_start_not_closed 5 "--start is where the closed form .*
 frontpack_tool_test(fill_start_bad 5 "--start '0.5': expected two numbers X,Y" fill ${SQ} --method closed --start 0.5)
 frontpack_tool_test(fill_start_many_polygons 5 "--start: the domain has 4 polygons"
   fill ${S}/islands.wkt --method closed --start 0.5,0.5)
-frontpack_tool_test(fill_clearance_bad 5 "--clearance -1: expected a gap > 0" fill ${SQ} --clearance -1)
+frontpack_tool_test(fill_clearance_bad 5 "--clearance '-1': expected a gap > 0" fill ${SQ} --clearance -1)
 frontpack_tool_test(fill_clearance_tiny 5 "clearance must be 0 \\(automatic\\) or a finite number >= [0-9.e-]+ for this domain and radius range, got 1e-300"
   fill ${SQ} --clearance 1e-300)
-frontpack_tool_test(fill_window_bad 5 "--window -2: expected a whole number" fill ${SQ} --window -2)
+frontpack_tool_test(fill_window_bad 5 "--window '-2': expected a whole number" fill ${SQ} --window -2)
 # --progress in a log: every phase named, the generation at 100%.
 frontpack_tool_test(fill_progress_log 0 "progress: generating +100% of area.*progress: certifying [0-9]+ disks.*progress: measuring.*progress: writing .*fill_progress_log\\.csv.*disks: "
   fill ${SQ} --radius uniform:0.01,0.02 --progress -o ${TOOL_OUT}/fill_progress_log.csv)

@@ -1,11 +1,8 @@
 #include "cli.hpp"
 
-#include <algorithm>
-#include <charconv>
-#include <cmath>
+#include <exception>
 #include <filesystem>
 #include <string_view>
-#include <system_error>
 #include <utility>
 
 #include "domain_files.hpp"
@@ -24,24 +21,6 @@ void set_signal_watch(SignalWatch* watch) {
 
 std::stop_token stop_token() {
   return g_signals != nullptr ? g_signals->token() : std::stop_token{};
-}
-
-std::uint64_t parse_count(const char* option, const std::string& text, std::uint64_t max) {
-  std::uint64_t value = 0;
-  const char* first = text.data();
-  const char* last = text.data() + text.size();
-  const bool digits = !text.empty() && text.find_first_not_of("0123456789") == std::string::npos;
-  const auto [end, ec] = digits ? std::from_chars(first, last, value) : std::from_chars_result{first, std::errc()};
-  const std::string range = "a whole number from 0 to " + std::to_string(max);
-  const std::string given = text.size() > 40 ? text.substr(0, 40) + "..." : text;
-  if (!digits) {
-    throw frontpack::OptionError(std::string(option) + " " + given + ": expected " + range +
-                                 (text.empty() ? "" : " (digits only)"));
-  }
-  if (ec == std::errc::result_out_of_range || end != last || value > max) {
-    throw frontpack::OptionError(std::string(option) + " " + given + ": too large; expected " + range);
-  }
-  return value;
 }
 
 void add_domain_source_options(CLI::App& cmd, DomainSource& src) {
@@ -74,31 +53,6 @@ void add_periodic_options(CLI::App& cmd, DomainSource& src) {
   }
 }
 
-std::string given_value(std::string_view option, const std::string& text) {
-  return std::string(option) + " '" + (text.size() > 80 ? text.substr(0, 80) + "..." : text) + "'";
-}
-
-std::vector<double> finite_numbers(std::string_view option, const std::string& text, std::string_view expected) {
-  const std::string given = given_value(option, text);
-  std::vector<double> values;
-  std::size_t begin = 0;
-  while (true) {
-    const std::size_t comma = std::min(text.find(',', begin), text.size());
-    const std::string_view item = std::string_view(text).substr(begin, comma - begin);
-    double value = 0;
-    const auto [end, ec] = std::from_chars(item.data(), item.data() + item.size(), value);
-    if (item.empty() || ec != std::errc{} || end != item.data() + item.size() || !std::isfinite(value)) {
-      throw frontpack::OptionError(given + ": '" + std::string(item.substr(0, 40)) +
-                                   "' is not a finite number; expected " + std::string(expected));
-    }
-    values.push_back(value);
-    if (comma == text.size()) {
-      return values;
-    }
-    begin = comma + 1;
-  }
-}
-
 frontpack::Domain periodic_domain(const std::string& text, const std::string& axes) {
   frontpack::Periodicity periodicity = frontpack::Periodicity::none;
   if (axes == "xy") {
@@ -106,7 +60,7 @@ frontpack::Domain periodic_domain(const std::string& text, const std::string& ax
   } else if (axes == "x") {
     periodicity = frontpack::Periodicity::x;
   } else {
-    throw frontpack::OptionError("--periodic-axes '" + axes.substr(0, 40) + "': expected xy or x");
+    throw frontpack::OptionError(given_value("--periodic-axes", axes) + ": expected xy or x");
   }
   const std::string given = given_value("--periodic", text);
   const std::vector<double> values = finite_numbers("--periodic", text, "LX,LY or XMIN,YMIN,XMAX,YMAX");

@@ -1,5 +1,5 @@
-// The command-line tool's shared parts: exit codes, the signal watch's stop token, number
-// parsing, the domain given as a file or as --wkt, and one function per subcommand
+// The command-line tool's shared parts: exit codes, the signal watch's stop token, the domain
+// given as a file or as --wkt, and one function per subcommand
 // (tools/commands/) that registers it and returns how to run it.
 #pragma once
 
@@ -8,12 +8,14 @@
 #include <cstdint>
 #include <exception>
 #include <functional>
+#include <optional>
 #include <stop_token>
 #include <string>
 #include <string_view>
 #include <vector>
 
 #include "frontpack/frontpack.hpp"
+#include "option_values.hpp"
 #include "outputs.hpp"
 #include "signals.hpp"
 
@@ -51,11 +53,6 @@ constexpr const char* kRadiusHelp =
 void set_signal_watch(SignalWatch* watch);
 [[nodiscard]] std::stop_token stop_token();
 
-// A whole number for OPTION, in [0, max]: digits only (no sign, no exponent, no fraction), so
-// that "-1" or "1e23" is refused rather than wrapped or truncated. Throws OptionError naming the
-// option and the text given.
-[[nodiscard]] std::uint64_t parse_count(const char* option, const std::string& text, std::uint64_t max);
-
 struct DomainSource {
   std::string file;
   std::string wkt;
@@ -86,15 +83,6 @@ void add_domain_source_options(CLI::App& cmd, DomainSource& src);
 /// --periodic and --periodic-axes (excluding --wkt when that is registered first): the domain is a
 /// periodic cell, periodic_domain(src.periodic, src.periodic_axes).
 void add_periodic_options(CLI::App& cmd, DomainSource& src);
-
-/// "OPTION 'TEXT'", TEXT cut to 80 characters: how an error message names an option's value.
-[[nodiscard]] std::string given_value(std::string_view option, const std::string& text);
-
-/// The comma-separated numbers of an option's value, as std::from_chars reads them. Throws
-/// OptionError "OPTION 'TEXT': 'ITEM' is not a finite number; expected EXPECTED" for an item that
-/// is not one (an empty item included).
-[[nodiscard]] std::vector<double> finite_numbers(std::string_view option, const std::string& text,
-                                                 std::string_view expected);
 
 /// The periodic cell of `--periodic TEXT --periodic-axes AXES`: TEXT is "LX,LY" (the cell
 /// [0, LX) x [0, LY)) or "XMIN,YMIN,XMAX,YMAX"; numbers as std::from_chars reads them, finite;

@@ -1,11 +1,11 @@
 #include "domain_files.hpp"
 
-#include <charconv>
-#include <cmath>
+#include <algorithm>
 #include <numbers>
+#include <optional>
 #include <sstream>
-#include <system_error>
 
+#include "option_values.hpp"
 #include "report.hpp"
 
 namespace frontpack_tool {
@@ -13,14 +13,13 @@ namespace frontpack_tool {
 namespace {
 
 double parse_deviation(const std::string& text) {
-  double value = 0;
-  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
-  if (ec != std::errc{} || end != text.data() + text.size() || !std::isfinite(value) || value < 0) {
-    throw frontpack::OptionError("--max-deviation " + text +
+  const std::optional<double> value = cli::finite_number(text);
+  if (!value || *value < 0) {
+    throw frontpack::OptionError(cli::given_value("--max-deviation", text) +
                                  ": expected a finite number >= 0 (the largest distance between a curve and its "
                                  "polyline, in the domain's units; 0: 1e-3 of each curve's radius)");
   }
-  return value;
+  return *value;
 }
 
 }  // namespace

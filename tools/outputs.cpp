@@ -10,6 +10,7 @@
 #include <unordered_set>
 
 #include "frontpack/errors.hpp"
+#include "option_values.hpp"
 
 namespace frontpack_tool {
 
@@ -51,7 +52,7 @@ OutputFormat resolve_format(const std::filesystem::path& path, const std::string
       } catch (const frontpack::OptionError&) {
       }
     }
-    throw frontpack::OptionError(std::string("--format ") + name + ": unknown format; expected " + known);
+    throw frontpack::OptionError(cli::given_value("--format", name) + ": unknown format; expected " + known);
   }
   if (const auto picture = picture_from_path(path)) {
     return *picture;

@@ -18,7 +18,7 @@ if(FRONTPACK_WITH_DXFLIB)
   frontpack_tool_test(cad_zero_radius 3 "zero_radius.dxf: CIRCLE \\(handle 2F, line 2026\\): radius 0; expected a finite number > 0"
     info ${C}/zero_radius.dxf)
   frontpack_tool_test(cad_branching 3 "branching.dxf: LINE .*: the end \\(1 0\\) meets 2 other ends" info ${C}/branching.dxf)
-  frontpack_tool_test(cad_bad_deviation 5 "--max-deviation -1: expected a finite number >= 0" info ${C}/drum.dxf --max-deviation -1)
+  frontpack_tool_test(cad_bad_deviation 5 "--max-deviation '-1': expected a finite number >= 0" info ${C}/drum.dxf --max-deviation -1)
   frontpack_tool_test(cad_tiny_deviation 5 "curve deviation 1e-15 is too small for CIRCLE" info ${C}/drum.dxf --max-deviation 1e-15)
   set(O ${TOOL_OUT}/cad_fill_json)
   # (No square bracket in the pattern: CMake's lists do not split inside one.)

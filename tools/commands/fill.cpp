@@ -47,17 +47,16 @@ std::size_t parse_bytes(const char* option, const std::string& text) {
     const std::size_t u = units.find(static_cast<char>(std::toupper(static_cast<unsigned char>(text.back()))));
     shift = u == std::string::npos ? -1 : 10 * static_cast<int>(u + 1);
   }
-  const std::string given = text.size() > 40 ? text.substr(0, 40) + "..." : text;
   if (digits == 0 || shift < 0) {
-    throw frontpack::OptionError(std::string(option) + " '" + given +
-                                 "': expected a number of bytes, with an optional suffix K, M, G or T (powers of "
+    throw frontpack::OptionError(given_value(option, text) +
+                                 ": expected a number of bytes, with an optional suffix K, M, G or T (powers of "
                                  "1024), e.g. 512M or 2G; 0 for three quarters of the machine's memory");
   }
   std::uint64_t value = 0;
   const auto [end, ec] = std::from_chars(text.data(), text.data() + digits, value);
   (void)end;
   if (ec != std::errc{} || value > (std::numeric_limits<std::size_t>::max() >> shift)) {
-    throw frontpack::OptionError(std::string(option) + " '" + given + "': too large");
+    throw frontpack::OptionError(given_value(option, text) + ": too large");
   }
   return static_cast<std::size_t>(value) << shift;
 }
@@ -92,34 +91,11 @@ struct FillArgs {
   std::string height;               // --height H
 };
 
-// A finite double for OPTION, read exactly as from_chars reads it (no locale). Throws OptionError.
-double parse_double(const char* option, std::string_view text) {
-  double value = 0;
-  const char* first = text.data();
-  const char* last = first + text.size();
-  const auto [end, ec] = std::from_chars(first, last, value);
-  if (text.empty() || ec != std::errc{} || end != last || !std::isfinite(value)) {
-    throw frontpack::OptionError(std::string(option) + " '" + std::string(text.substr(0, 40)) +
-                                 "': expected a finite number, e.g. 0.5 or -2e-3");
-  }
-  return value;
-}
-
-// A finite number > 0 for OPTION. Throws OptionError.
-double parse_positive(const char* option, const std::string& text) {
-  const double value = parse_double(option, text);
-  if (!(value > 0)) {
-    throw frontpack::OptionError(std::string(option) + " '" + text.substr(0, 40) + "': expected a finite number > 0");
-  }
-  return value;
-}
-
 // --start X,Y: the closed form's first disks (FillOptions::start).
 frontpack::Point parse_point(const char* option, const std::string& text) {
   const std::size_t comma = text.find(',');
   if (comma == std::string::npos || text.find(',', comma + 1) != std::string::npos) {
-    throw frontpack::OptionError(std::string(option) + " '" + text.substr(0, 40) +
-                                 "': expected two numbers X,Y, e.g. 0.5,0.25");
+    throw frontpack::OptionError(given_value(option, text) + ": expected two numbers X,Y, e.g. 0.5,0.25");
   }
   const std::string_view v(text);
   return {parse_double(option, v.substr(0, comma)), parse_double(option, v.substr(comma + 1))};
@@ -140,7 +116,7 @@ void apply_front_options(const FillArgs& a, frontpack::FillOptions& options) {
   if (!a.clearance.empty()) {
     options.clearance = parse_double("--clearance", a.clearance);
     if (!(options.clearance > 0)) {
-      throw frontpack::OptionError("--clearance " + a.clearance +
+      throw frontpack::OptionError(given_value("--clearance", a.clearance) +
                                    ": expected a gap > 0 between tangent disks (leave it out for the automatic one)");
     }
   }
@@ -206,7 +182,7 @@ frontpack::Method parse_method(const std::string& name) {
   if (name == "boundary") {
     return frontpack::Method::boundary;
   }
-  throw frontpack::OptionError(std::string("--method ") + name + ": expected closed, open or boundary");
+  throw frontpack::OptionError(given_value("--method", name) + ": expected closed, open or boundary");
 }
 
 Json fill_json(const FillArgs& a, const std::string& spec, const frontpack::FillOptions& options,

@@ -2,7 +2,6 @@
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
-#include <charconv>
 #include <cmath>
 #include <cstdint>
 #include <iostream>
@@ -11,7 +10,6 @@
 #include <numbers>
 #include <sstream>
 #include <string>
-#include <system_error>
 #include <vector>
 
 #include "cli.hpp"
@@ -36,17 +34,6 @@ struct StatsArgs {
   bool quiet = false;
 };
 
-// A length for OPTION: one decimal number (C locale, read with correct rounding), finite and > 0.
-double parse_length(const char* option, const std::string& text) {
-  double value = 0;
-  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
-  if (ec != std::errc{} || end != text.data() + text.size() || !std::isfinite(value) || !(value > 0)) {
-    const std::string given = text.size() > 40 ? text.substr(0, 40) + "..." : text;
-    throw frontpack::OptionError(std::string(option) + " '" + given + "': expected a finite number > 0");
-  }
-  return value;
-}
-
 int run_stats(StatsArgs& a) {
   resolve(a.in);
   frontpack::StatsOptions options;
@@ -57,13 +44,13 @@ int run_stats(StatsArgs& a) {
   }
   options.samples = parse_count("--samples", a.samples, std::uint64_t{1} << 40);
   for (const std::string& r : a.hole_radii) {
-    options.hole_radii.push_back(parse_length("--hole-radius", r));
+    options.hole_radii.push_back(parse_positive("--hole-radius", r));
   }
   if (!a.contact_gap.empty()) {
-    options.contact_gap = parse_length("--contact-gap", a.contact_gap);
+    options.contact_gap = parse_positive("--contact-gap", a.contact_gap);
   }
   if (!a.cell_side.empty()) {
-    options.cell_side = parse_length("--cell-side", a.cell_side);
+    options.cell_side = parse_positive("--cell-side", a.cell_side);
   }
   options.stop = stop_token();
   frontpack_tool::check_files(inputs, output_uses({}, a.json));

@@ -1,0 +1,78 @@
+// The values of the tool's options (option_values.hpp).
+#include "option_values.hpp"
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <system_error>
+
+#include "frontpack/errors.hpp"
+
+namespace frontpack_tool::cli {
+
+std::string given_value(std::string_view option, std::string_view text) {
+  return std::string(option) + " '" + std::string(text.substr(0, 80)) + (text.size() > 80 ? "...'" : "'");
+}
+
+std::uint64_t parse_count(std::string_view option, const std::string& text, std::uint64_t max) {
+  std::uint64_t value = 0;
+  const char* first = text.data();
+  const char* last = text.data() + text.size();
+  const bool digits = !text.empty() && text.find_first_not_of("0123456789") == std::string::npos;
+  const auto [end, ec] = digits ? std::from_chars(first, last, value) : std::from_chars_result{first, std::errc()};
+  const std::string range = "a whole number from 0 to " + std::to_string(max);
+  if (!digits) {
+    throw frontpack::OptionError(given_value(option, text) + ": expected " + range +
+                                 (text.empty() ? "" : " (digits only)"));
+  }
+  if (ec == std::errc::result_out_of_range || end != last || value > max) {
+    throw frontpack::OptionError(given_value(option, text) + ": too large; expected " + range);
+  }
+  return value;
+}
+
+std::optional<double> finite_number(std::string_view text) {
+  double value = 0;
+  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (text.empty() || ec != std::errc{} || end != text.data() + text.size() || !std::isfinite(value)) {
+    return std::nullopt;
+  }
+  return value;
+}
+
+double parse_double(std::string_view option, std::string_view text) {
+  const std::optional<double> value = finite_number(text);
+  if (!value) {
+    throw frontpack::OptionError(given_value(option, text) + ": expected a finite number, e.g. 0.5 or -2e-3");
+  }
+  return *value;
+}
+
+double parse_positive(std::string_view option, std::string_view text) {
+  const std::optional<double> value = finite_number(text);
+  if (!value || !(*value > 0)) {
+    throw frontpack::OptionError(given_value(option, text) + ": expected a finite number > 0");
+  }
+  return *value;
+}
+
+std::vector<double> finite_numbers(std::string_view option, const std::string& text, std::string_view expected) {
+  std::vector<double> values;
+  std::size_t begin = 0;
+  while (true) {
+    const std::size_t comma = std::min(text.find(',', begin), text.size());
+    const std::string_view item = std::string_view(text).substr(begin, comma - begin);
+    const std::optional<double> value = finite_number(item);
+    if (!value) {
+      throw frontpack::OptionError(given_value(option, text) + ": '" + std::string(item.substr(0, 40)) +
+                                   "' is not a finite number; expected " + std::string(expected));
+    }
+    values.push_back(*value);
+    if (comma == text.size()) {
+      return values;
+    }
+    begin = comma + 1;
+  }
+}
+
+}  // namespace frontpack_tool::cli
