@@ -310,13 +310,15 @@ frontpack_tool_check(render_cells_range 0 "coverage 0\\.6000 \\(dark\\) to 0\\.9
   FILE_MATCHES ${O}/u.svg "<title>frontpack cell coverage: 49 interior cells of side 0\\.3[0-9]*, coverage 0\\.6000 \\(dark\\) to 0\\.9500 \\(light\\), the cells' 0\\.[6-9][0-9]+ to 0\\.[6-9][0-9]+</title>"
   ARGS render --periodic 2,2 ${TOOL_OUT}/stats_periodic_fill/p.csv --cells --cells-range 0.6,0.95 -o ${O}/u.svg --width 300)
 set_tests_properties(tool.render_cells_range PROPERTIES FIXTURES_REQUIRED periodic_fill_csv)
-set(O ${TOOL_OUT}/render_cells_range_bad)
+set(O ${TOOL_OUT}/render_cells_range_order)
 frontpack_tool_check(render_cells_range_order 5 "--cells-range '0\\.9,0\\.8': expected LO,HI with LO < HI" NO_FILES ${O}/a.png
   ARGS render ${SQ} ${TD}/good.csv --cells --cells-range 0.9,0.8 -o ${O}/a.png)
+set(O ${TOOL_OUT}/render_cells_range_number)
 frontpack_tool_check(render_cells_range_number 5 "--cells-range '0\\.7,abc': 'abc' is not a finite number; expected LO,HI"
-  NO_FILES ${O}/b.png ARGS render ${SQ} ${TD}/good.csv --cells --cells-range 0.7,abc -o ${O}/b.png)
-frontpack_tool_check(render_cells_range_needs_cells 1 "--cells-range requires --cells" NO_FILES ${O}/c.png
-  ARGS render ${SQ} ${TD}/good.csv --cells-range 0.7,0.8 -o ${O}/c.png)
+  NO_FILES ${O}/a.png ARGS render ${SQ} ${TD}/good.csv --cells --cells-range 0.7,abc -o ${O}/a.png)
+set(O ${TOOL_OUT}/render_cells_range_needs_cells)
+frontpack_tool_check(render_cells_range_needs_cells 1 "--cells-range requires --cells" NO_FILES ${O}/a.png
+  ARGS render ${SQ} ${TD}/good.csv --cells-range 0.7,0.8 -o ${O}/a.png)
 frontpack_tool_check(stats_bad_cell_side 5 "--cell-side '-0\\.5': expected a finite number > 0"
   ARGS stats ${SQ} ${TD}/good.csv --cell-side=-0.5)
 frontpack_tool_check(fill_json_unwritable 2 "cannot write '/nonexistent/dir/s\\.json'"
@@ -403,6 +405,8 @@ frontpack_tool_check(fill_start 0 "closed form" FILES ${O}/p.csv FILE_MATCHES ${
 frontpack_tool_test(fill_start_not_closed 5 "--start is where the closed form .* the boundary form has no start point"
   fill ${SQ} --start 0.5,0.5)
 frontpack_tool_test(fill_start_bad 5 "--start '0.5': expected two numbers X,Y" fill ${SQ} --method closed --start 0.5)
+frontpack_tool_test(fill_start_bad_number 5 "--start '0.5,abc': 'abc' is not a finite number; expected two numbers X,Y"
+  fill ${SQ} --method closed --start 0.5,abc)
 frontpack_tool_test(fill_start_many_polygons 5 "--start: the domain has 4 polygons"
   fill ${S}/islands.wkt --method closed --start 0.5,0.5)
 frontpack_tool_test(fill_clearance_bad 5 "--clearance '-1': expected a gap > 0" fill ${SQ} --clearance -1)

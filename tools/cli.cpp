@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "domain_files.hpp"
+#include "option_values.hpp"
 
 namespace frontpack_tool::cli {
 

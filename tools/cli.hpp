@@ -8,14 +8,11 @@
 #include <cstdint>
 #include <exception>
 #include <functional>
-#include <optional>
 #include <stop_token>
 #include <string>
-#include <string_view>
 #include <vector>
 
 #include "frontpack/frontpack.hpp"
-#include "option_values.hpp"
 #include "outputs.hpp"
 #include "signals.hpp"
 

@@ -10,8 +10,19 @@
 
 namespace frontpack_tool::cli {
 
+namespace {
+
+// 'TEXT', TEXT cut to n characters (and "..." after it if it was).
+std::string quoted(std::string_view text, std::size_t n) {
+  std::string out(1, '\'');
+  out.append(text.substr(0, n)).append(text.size() > n ? "...'" : "'");
+  return out;
+}
+
+}  // namespace
+
 std::string given_value(std::string_view option, std::string_view text) {
-  return std::string(option) + " '" + std::string(text.substr(0, 80)) + (text.size() > 80 ? "...'" : "'");
+  return std::string(option) + " " + quoted(text, 80);
 }
 
 std::uint64_t parse_count(std::string_view option, const std::string& text, std::uint64_t max) {
@@ -64,8 +75,8 @@ std::vector<double> finite_numbers(std::string_view option, const std::string& t
     const std::string_view item = std::string_view(text).substr(begin, comma - begin);
     const std::optional<double> value = finite_number(item);
     if (!value) {
-      throw frontpack::OptionError(given_value(option, text) + ": '" + std::string(item.substr(0, 40)) +
-                                   "' is not a finite number; expected " + std::string(expected));
+      throw frontpack::OptionError(given_value(option, text) + ": " + quoted(item, 40) +
+                                   " is not a finite number; expected " + std::string(expected));
     }
     values.push_back(*value);
     if (comma == text.size()) {

@@ -3,6 +3,8 @@
 #include <cstdint>
 #include <limits>
 
+#include "option_values.hpp"
+
 namespace frontpack_tool::cli {
 
 namespace {

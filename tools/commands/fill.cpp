@@ -21,6 +21,7 @@
 #include "cli.hpp"
 #include "domain_files.hpp"
 #include "frontpack/frontpack.hpp"
+#include "option_values.hpp"
 #include "outputs.hpp"
 #include "progress.hpp"
 #include "render.hpp"
@@ -93,12 +94,12 @@ struct FillArgs {
 
 // --start X,Y: the closed form's first disks (FillOptions::start).
 frontpack::Point parse_point(const char* option, const std::string& text) {
-  const std::size_t comma = text.find(',');
-  if (comma == std::string::npos || text.find(',', comma + 1) != std::string::npos) {
-    throw frontpack::OptionError(given_value(option, text) + ": expected two numbers X,Y, e.g. 0.5,0.25");
+  static constexpr const char* kExpected = "two numbers X,Y, e.g. 0.5,0.25";
+  const std::vector<double> xy = finite_numbers(option, text, kExpected);
+  if (xy.size() != 2) {
+    throw frontpack::OptionError(given_value(option, text) + ": expected " + kExpected);
   }
-  const std::string_view v(text);
-  return {parse_double(option, v.substr(0, comma)), parse_double(option, v.substr(comma + 1))};
+  return {xy[0], xy[1]};
 }
 
 // The library options that have flags, beyond method, radius, seed and limits.
@@ -128,7 +129,7 @@ void apply_front_options(const FillArgs& a, frontpack::FillOptions& options) {
   if (!a.count.empty()) {
     options.count = parse_count("--count", a.count, std::numeric_limits<std::uint64_t>::max());
     if (options.count == 0) {
-      throw frontpack::OptionError("--count 0: expected a number of disks >= 1");
+      throw frontpack::OptionError(given_value("--count", a.count) + ": expected a number of disks >= 1");
     }
   }
   if (!a.height.empty()) {

@@ -1,22 +1,15 @@
 // `frontpack render`: draw a packing (PNG, SVG, PDF).
 #include <CLI/CLI.hpp>
 
-#include <algorithm>
 #include <array>
-#include <charconv>
-#include <cmath>
-#include <cstdint>
 #include <iostream>
-#include <limits>
 #include <memory>
-#include <numbers>
-#include <sstream>
 #include <string>
-#include <system_error>
 #include <vector>
 
 #include "cli.hpp"
 #include "frontpack/frontpack.hpp"
+#include "option_values.hpp"
 #include "outputs.hpp"
 #include "packing_inputs.hpp"
 #include "render.hpp"

@@ -14,6 +14,7 @@
 
 #include "cli.hpp"
 #include "frontpack/frontpack.hpp"
+#include "option_values.hpp"
 #include "outputs.hpp"
 #include "packing_inputs.hpp"
 #include "render.hpp"
