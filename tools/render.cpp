@@ -329,7 +329,6 @@ void draw_cells(cairo_t* cr, const View& view, const frontpack::CellCoverage& c,
 void draw(cairo_t* cr, const View& view, Picture format, const frontpack::Domain& domain,
           std::span<const frontpack::Disk> disks, std::span<const frontpack::Disk> images, const RenderOptions& options,
           int width_px, int height_px) {
-  const std::optional<frontpack::CellCoverage>& cells = options.cells;
   cairo_set_source_rgb(cr, 1, 1, 1);
   cairo_paint(cr);
 
@@ -355,23 +354,23 @@ void draw(cairo_t* cr, const View& view, Picture format, const frontpack::Domain
   cairo_fill(cr);
   cairo_set_fill_rule(cr, CAIRO_FILL_RULE_WINDING);
 
-  const ColourScale colours(disks);
-  if (cells) {
+  if (options.cells) {
     cairo_save(cr);
     cairo_set_fill_rule(cr, CAIRO_FILL_RULE_EVEN_ODD);
     domain_path();
     cairo_clip(cr);
     cairo_set_antialias(cr, CAIRO_ANTIALIAS_NONE);  // no seam of blended pixels between two cells
-    draw_cells(cr, view, *cells, options.cells_range);
+    draw_cells(cr, view, *options.cells, options.cells_range);
     cairo_restore(cr);
-  } else if (!images.empty()) {
-    // Lighter: the images drawn on a group painted at a third of their opacity.
-    cairo_push_group(cr);
-    draw_disks(cr, view, format, images, colours, width_px, height_px);
-    cairo_pop_group_to_source(cr);
-    cairo_paint_with_alpha(cr, 0.35);
-  }
-  if (!cells) {
+  } else {
+    const ColourScale colours(disks);
+    if (!images.empty()) {
+      // Lighter: the images drawn on a group painted at a third of their opacity.
+      cairo_push_group(cr);
+      draw_disks(cr, view, format, images, colours, width_px, height_px);
+      cairo_pop_group_to_source(cr);
+      cairo_paint_with_alpha(cr, 0.35);
+    }
     draw_disks(cr, view, format, disks, colours, width_px, height_px);
   }
 
@@ -535,7 +534,7 @@ void render(frontpack::OutputFile& out, Picture format, const frontpack::Domain&
   {
     const Context cr(cairo_create(surface.get()));
     const std::vector<frontpack::Disk> images =
-        options.images ? periodic_images(domain, disks) : std::vector<frontpack::Disk>{};
+        options.images && !options.cells ? periodic_images(domain, disks) : std::vector<frontpack::Disk>{};
     draw(cr.get(), view, format, domain, disks, images, options, width, height);
     if (options.stop.stop_requested()) {
       throw frontpack::CancelledError();
