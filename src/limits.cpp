@@ -1,14 +1,11 @@
 #include "limits.hpp"
 
-#include <unistd.h>
-
 #include <algorithm>
 #include <cstdint>
-#include <cstdio>
 #include <limits>
 #include <numbers>
-#include <string>
 
+#include "common/budget.hpp"
 #include "common/packing_density.hpp"
 #include "generate/run_control.hpp"
 
@@ -16,26 +13,9 @@ namespace frontpack::detail {
 
 namespace {
 
-// Physical memory in bytes, or 0 if the system does not say.
-double physical_memory() {
-  const long pages = ::sysconf(_SC_PHYS_PAGES);
-  const long page = ::sysconf(_SC_PAGESIZE);
-  return pages > 0 && page > 0 ? static_cast<double>(pages) * static_cast<double>(page) : 0;
-}
-
 // Bytes as a count (at most the largest size_t).
 std::size_t count_of_bytes(double bytes) {
   return bytes < 0x1p63 ? static_cast<std::size_t>(bytes) : std::size_t{1} << 63;
-}
-
-// A count for a message: an integer below 1e15, else in scientific notation.
-std::string format_count(double v) {
-  if (v < 1e15) {
-    return std::to_string(static_cast<std::uint64_t>(v));
-  }
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.3g", v);
-  return buf;
 }
 
 }  // namespace
@@ -45,26 +25,9 @@ RunBudget check_limits(const Domain& domain, const FillOptions& options, const R
   for (std::size_t p = 0; p < domain.num_polygons(); ++p) {
     estimate += estimate_disks(domain.bbox(p), radii);
   }
-  // Saturated: an estimate can exceed every integer (1e600 disks for radii of 1e-300).
-  const std::size_t count =
-      estimate >= 0 && estimate < 0x1p63 ? static_cast<std::size_t>(estimate) : std::numeric_limits<std::size_t>::max();
-  // Written so that a NaN fails the checks (estimate_disks() gives none; a check must not rely on it).
-  if (!(estimate <= static_cast<double>(options.max_disks))) {
-    throw LimitError("the request would generate about " + format_count(estimate) +
-                         " disks, more than max_disks = " + std::to_string(options.max_disks) +
-                         "; use larger radii or raise max_disks (frontpack fill --max-disks)",
-                     count);
-  }
-  const double memory_limit =
-      options.memory_limit != 0 ? static_cast<double>(options.memory_limit) : 0.75 * physical_memory();
-  const double memory = estimate * static_cast<double>(peak_bytes_per_disk);
-  if (memory_limit > 0 && !(memory <= memory_limit)) {
-    throw LimitError("the request would generate about " + format_count(estimate) + " disks, needing about " +
-                         format_count(memory) + " bytes of memory, more than the limit of " +
-                         format_count(memory_limit) +
-                         " bytes; use larger radii or raise memory_limit (frontpack fill --memory-limit)",
-                     count);
-  }
+  const Budget budget{options.max_disks, options.memory_limit};
+  check_count(budget, estimate, static_cast<double>(peak_bytes_per_disk), "disks", "use larger radii");
+  const double memory_limit = memory_allowed(budget);
   // The limit holds during the run too (the estimate is only an estimate: a box far thinner than
   // the disks makes more than it says): the generators count their grids against it and stop
   // their disks short of it, peak_bytes_per_disk each (FrontResult::over_memory, a LimitError).

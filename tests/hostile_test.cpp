@@ -160,7 +160,7 @@ TEST(Hostile, AstronomicalRequestIsRefusedWithTheEstimate) {
     ADD_FAILURE() << "not refused";
   } catch (const fp::LimitError& e) {
     EXPECT_GT(e.estimate(), 1e15);
-    EXPECT_NE(std::string(e.what()).find("would generate about"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("would make about"), std::string::npos) << e.what();
   }
   // An estimate beyond any integer (1e600 disks) saturates instead of overflowing.
   try {
@@ -242,7 +242,7 @@ TEST(Hostile, RequestBeyondTheMemoryLimitIsRefused) {
     ADD_FAILURE() << "not refused";
   } catch (const fp::LimitError& e) {
     EXPECT_NE(std::string(e.what()).find("bytes of memory"), std::string::npos) << e.what();
-    EXPECT_NE(std::string(e.what()).find("raise memory_limit (frontpack fill --memory-limit)"), std::string::npos)
+    EXPECT_NE(std::string(e.what()).find("raise memory_limit (--memory-limit)"), std::string::npos)
         << e.what();
   }
   o.memory_limit = 100'000'000;  // 100 MB: enough
@@ -283,7 +283,7 @@ TEST(Hostile, MemoryLimitHoldsDuringTheRun) {
       const std::string what = e.what();
       EXPECT_NE(what.find("memory limit of " + std::to_string(c.limit) + " bytes: " + c.what), std::string::npos)
           << what;
-      EXPECT_NE(what.find("raise memory_limit (frontpack fill --memory-limit)"), std::string::npos) << what;
+      EXPECT_NE(what.find("raise memory_limit (--memory-limit)"), std::string::npos) << what;
     }
   }
   for (const fp::Method m : {fp::Method::closed, fp::Method::open, fp::Method::boundary}) {

@@ -33,7 +33,7 @@ frontpack_tool_test(fill_nan_radius 5 "must be a finite number > 0" fill ${S}/l_
 frontpack_tool_test(fill_bad_method 5 "--method 'diagonal': expected closed, open or boundary" fill ${S}/l_shape.wkt --method diagonal)
 frontpack_tool_test(fill_bad_format 5 "unknown format '.xyz'" fill ${S}/l_shape.wkt -o out.xyz)
 frontpack_tool_test(fill_unwritable 2 "cannot write '/nonexistent/dir/p.csv': No such file or directory" fill ${S}/l_shape.wkt -o /nonexistent/dir/p.csv)
-frontpack_tool_test(fill_too_many 5 "would generate about [0-9]+ disks, more than max_disks" fill ${S}/unit_square.wkt --radius constant:1e-5)
+frontpack_tool_test(fill_too_many 5 "would make about [0-9]+ disks, more than max_disks" fill ${S}/unit_square.wkt --radius constant:1e-5)
 
 # The tool's CSV read back by the library's strict reader (frontpack::read_disks) and certified
 # again: the file holds the certificate and as many disks as the tool reported.
@@ -355,10 +355,10 @@ frontpack_tool_test(check_nul_byte 7 "nul_byte\\.csv:2:5: y '0\\.5\\\\0' is not 
 # --memory-limit (bytes, K/M/G/T suffixes): a request whose estimate exceeds it is refused up
 # front; a run that would exceed it (a sliver whose overhanging disks the estimate misses) stops
 # with the same exit code and a message naming the option.
-frontpack_tool_test(fill_memory_limit_refused 5 "more than the limit of 1048576 bytes; use larger radii or raise memory_limit \\(frontpack fill --memory-limit\\)"
+frontpack_tool_test(fill_memory_limit_refused 5 "more than the limit of 1048576 bytes; use larger radii or raise memory_limit \\(--memory-limit\\)"
   fill ${SQ} --radius constant:1e-3 --memory-limit 1M)
 frontpack_tool_test(fill_memory_limit_stops_the_run 5
-  "the run would need more than the memory limit of 16777216 bytes: it had generated [0-9]+ disks.*raise memory_limit \\(frontpack fill --memory-limit\\)"
+  "the run would need more than the memory limit of 16777216 bytes: it had generated [0-9]+ disks.*raise memory_limit \\(--memory-limit\\)"
   fill --wkt "POLYGON((0 0,1 0,1 1e-5,0 0))" --method open --radius constant:4.5e-6 --memory-limit 16m)
 frontpack_tool_test(fill_memory_limit_enough 0 "disks: +[0-9]+ \\(open form"
   fill --wkt "POLYGON((0 0,1 0,1 1e-5,0 0))" --method open --radius constant:4.5e-6 --memory-limit 64000000)

@@ -2,6 +2,7 @@
 
 #include <exception>
 #include <filesystem>
+#include <limits>
 #include <string_view>
 #include <utility>
 
@@ -31,6 +32,14 @@ void add_domain_source_options(CLI::App& cmd, DomainSource& src) {
   cmd.add_option("--max-deviation", src.max_deviation,
                  "largest distance between a DXF curve and the polyline that replaces it, on the domain's side "
                  "(default: rmin/10 in fill, else 1e-3 of each curve's radius)");
+  cmd.add_option("--max-disks", src.max_count,
+                 "the most items of each kind the command may make (disks, wall disks, curve segments, sample "
+                 "points): refused up front when estimated beyond; fill stops a run that reaches it (exit 9)")
+      ->capture_default_str();
+  cmd.add_option("--memory-limit", src.memory_limit,
+                 "bytes the command may take, e.g. 512M or 2G (K, M, G, T: powers of 1024); refused up front or "
+                 "stopped before it would take more (exit 5); 0: three quarters of the machine's memory")
+      ->capture_default_str();
 }
 
 void add_domain_options(CLI::App& cmd, DomainSource& src) {
@@ -85,6 +94,11 @@ frontpack::Domain load(const DomainSource& src) {
   return load_file(src).domain;
 }
 
+frontpack::Budget budget(const DomainSource& src) {
+  return {.max_count = parse_count("--max-disks", src.max_count, std::numeric_limits<std::uint64_t>::max()),
+          .memory_limit = parse_bytes("--memory-limit", src.memory_limit)};
+}
+
 frontpack::DomainFile load_file(const DomainSource& src, double default_deviation) {
   if (src.from_text()) {
     if (src.wkt.find_first_not_of(" \t\r\n") == std::string::npos) {
@@ -109,7 +123,7 @@ frontpack::DomainFile load_file(const DomainSource& src, double default_deviatio
   if (src.file.empty()) {
     throw CLI::RequiredError("DOMAIN or --wkt");
   }
-  return frontpack_tool::read_domain(src.file, src.format, src.max_deviation, default_deviation);
+  return frontpack_tool::read_domain(src.file, src.format, src.max_deviation, default_deviation, budget(src));
 }
 
 std::vector<frontpack_tool::FileUse> domain_inputs(const DomainSource& src) {

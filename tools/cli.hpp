@@ -57,6 +57,9 @@ struct DomainSource {
   std::string max_deviation;         // --max-deviation: "" for the command's default
   std::string periodic;              // --periodic LX,LY | XMIN,YMIN,XMAX,YMAX
   std::string periodic_axes = "xy";  // --periodic-axes xy | x
+  // --max-disks, --memory-limit: the Budget (frontpack/budget.hpp) every count is held to
+  std::string max_count = std::to_string(frontpack::Budget{}.max_count);
+  std::string memory_limit = "0";
   CLI::Option* wkt_option = nullptr;
   CLI::Option* periodic_option = nullptr;
   [[nodiscard]] bool from_text() const { return wkt_option != nullptr && wkt_option->count() > 0; }
@@ -73,7 +76,7 @@ constexpr const char* kDomainFileHelp =
     "Shapefile (polygons), by extension";
 
 /// DOMAIN (a file: WKT, DXF, GeoJSON, Shapefile) or --wkt TEXT, each excluding the other, and
-/// --domain-format, --max-deviation.
+/// --domain-format, --max-deviation, --max-disks, --memory-limit.
 void add_domain_options(CLI::App& cmd, DomainSource& src);
 /// The same without the DOMAIN positional (for commands that take more positionals).
 void add_domain_source_options(CLI::App& cmd, DomainSource& src);
@@ -91,6 +94,8 @@ void add_periodic_options(CLI::App& cmd, DomainSource& src);
 /// none is. Curves get --max-deviation, else `default_deviation` (0: the library's relative one).
 [[nodiscard]] frontpack::DomainFile load_file(const DomainSource& src, double default_deviation = 0);
 [[nodiscard]] frontpack::Domain load(const DomainSource& src);
+/// The Budget of --max-disks and --memory-limit (OptionError naming the option and the value).
+[[nodiscard]] frontpack::Budget budget(const DomainSource& src);
 /// The domain file as an input that no output may overwrite (none for --wkt).
 [[nodiscard]] std::vector<FileUse> domain_inputs(const DomainSource& src);
 /// The outputs and the --json file as outputs for check_files().

@@ -25,8 +25,9 @@ double parse_deviation(const std::string& text) {
 }  // namespace
 
 frontpack::DomainFile read_domain(const std::string& file, const std::string& format, const std::string& max_deviation,
-                                  double default_deviation) {
+                                  double default_deviation, const frontpack::Budget& budget) {
   frontpack::DomainReadOptions options;
+  options.budget = budget;
   options.format = format.empty() ? frontpack::DomainFormat::automatic : frontpack::parse_domain_format(format);
   options.max_deviation = max_deviation.empty() ? default_deviation : parse_deviation(max_deviation);
   return frontpack::read_domain_file(file, options);

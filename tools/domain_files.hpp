@@ -10,9 +10,11 @@
 namespace frontpack_tool {
 
 /// Reads `file` as `format` ("" or "auto": by extension) with `max_deviation` (text of
-/// --max-deviation; "" for `default_deviation`, and 0 there for the library's relative default).
+/// --max-deviation; "" for `default_deviation`, and 0 there for the library's relative default),
+/// within `budget`.
 [[nodiscard]] frontpack::DomainFile read_domain(const std::string& file, const std::string& format,
-                                                const std::string& max_deviation, double default_deviation);
+                                                const std::string& max_deviation, double default_deviation,
+                                                const frontpack::Budget& budget);
 
 /// "curves:" summary lines, one per curve (the first `max_lines`, then a count), or "" when the
 /// file has none.

@@ -2,8 +2,10 @@
 #include "option_values.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <charconv>
 #include <cmath>
+#include <limits>
 #include <system_error>
 
 #include "frontpack/errors.hpp"
@@ -40,6 +42,33 @@ std::uint64_t parse_count(std::string_view option, const std::string& text, std:
     throw frontpack::OptionError(given_value(option, text) + ": too large; expected " + range);
   }
   return value;
+}
+
+std::size_t parse_bytes(std::string_view option, const std::string& text) {
+  std::size_t digits = 0;
+  while (digits < text.size() && text[digits] >= '0' && text[digits] <= '9') {
+    ++digits;
+  }
+  int shift = -1;
+  if (digits == text.size()) {
+    shift = 0;
+  } else if (digits + 1 == text.size()) {
+    const std::string units = "KMGT";
+    const std::size_t u = units.find(static_cast<char>(std::toupper(static_cast<unsigned char>(text.back()))));
+    shift = u == std::string::npos ? -1 : 10 * static_cast<int>(u + 1);
+  }
+  if (digits == 0 || shift < 0) {
+    throw frontpack::OptionError(given_value(option, text) +
+                                 ": expected a number of bytes, with an optional suffix K, M, G or T (powers of "
+                                 "1024), e.g. 512M or 2G; 0 for three quarters of the machine's memory");
+  }
+  std::uint64_t value = 0;
+  const auto [end, ec] = std::from_chars(text.data(), text.data() + digits, value);
+  (void)end;
+  if (ec != std::errc{} || value > (std::numeric_limits<std::size_t>::max() >> shift)) {
+    throw frontpack::OptionError(given_value(option, text) + ": too large");
+  }
+  return static_cast<std::size_t>(value) << shift;
 }
 
 std::optional<double> finite_number(std::string_view text) {

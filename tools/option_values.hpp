@@ -3,6 +3,7 @@
 // the value given (cut as given_value() cuts it).
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -16,6 +17,8 @@ namespace frontpack_tool::cli {
 /// A whole number in [0, max]: digits only (no sign, no exponent, no fraction), so that "-1" or
 /// "1e23" is refused rather than wrapped or truncated.
 [[nodiscard]] std::uint64_t parse_count(std::string_view option, const std::string& text, std::uint64_t max);
+/// Bytes: a whole number with an optional suffix K, M, G or T (powers of 1024: 512M, 2G).
+[[nodiscard]] std::size_t parse_bytes(std::string_view option, const std::string& text);
 /// text as a finite number, read exactly as std::from_chars reads it (no locale, correctly
 /// rounded), if it is one (all of it).
 [[nodiscard]] std::optional<double> finite_number(std::string_view text);

@@ -20,6 +20,7 @@
 #include <string_view>
 #include <vector>
 
+#include "frontpack/budget.hpp"
 #include "frontpack/domain.hpp"
 #include "frontpack/errors.hpp"
 #include "frontpack/geometry.hpp"
@@ -62,6 +63,8 @@ struct DeckOptions {
   /// Wall disks' radius (LAMMPS); 0: the packing's smallest radius.
   double wall_radius = 0;
   std::uint64_t steps = 5000;  ///< the run's length written into the script
+  /// What the deck may make: the wall disks, counted before any is placed.
+  Budget budget{};
   std::stop_token stop{};
 };
 

@@ -22,6 +22,7 @@
 #include <string_view>
 #include <vector>
 
+#include "frontpack/budget.hpp"
 #include "frontpack/domain.hpp"
 #include "frontpack/geometry.hpp"
 
@@ -66,6 +67,9 @@ struct DomainReadOptions {
   /// endpoints are computed from centre, radius and angles, so they never meet a LINE's written
   /// endpoint exactly.
   double join_tolerance = 1e-9;
+  /// What reading may make: the arc segments (every curve's polyline, counted before any is
+  /// split) and the bytes the file's text takes.
+  Budget budget{};
 };
 
 /// One arc (or full circle) of the file, and the polyline it became.

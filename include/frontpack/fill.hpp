@@ -69,7 +69,8 @@ struct FillOptions {
   /// empty areas.
   bool fill_voids = true;
   /// Refuse requests whose estimated disk count exceeds this (LimitError), and stop a run that
-  /// reaches it (Packing::truncated).
+  /// reaches it (Packing::truncated); 0: no count limit. With memory_limit, the fill's Budget
+  /// (frontpack/budget.hpp).
   std::size_t max_disks = 50'000'000;
   /// The memory a run may take, in bytes, so that it is never killed by the operating system
   /// half-way: a request whose estimated disks take more (peak_bytes_per_disk each) is refused up

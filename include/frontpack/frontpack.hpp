@@ -2,6 +2,7 @@
 // Umbrella header (CGAL-free). For CGAL interoperability include "frontpack/cgal.hpp".
 #pragma once
 
+#include "frontpack/budget.hpp"
 #include "frontpack/certify.hpp"
 #include "frontpack/deck.hpp"
 #include "frontpack/domain.hpp"

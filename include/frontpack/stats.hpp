@@ -93,6 +93,7 @@
 #include <string>
 #include <vector>
 
+#include "frontpack/budget.hpp"
 #include "frontpack/domain.hpp"
 #include "frontpack/geometry.hpp"
 #include "frontpack/sizes.hpp"
@@ -127,6 +128,9 @@ struct StatsOptions {
   /// radii cell for cell.
   bool cell_coverage = true;
   double cell_side = 0;
+  /// What measuring may make: sample points, hole probes, cells, periodic images, each counted
+  /// before it is made.
+  Budget budget{};
   /// Once a stop is requested, measure() throws CancelledError.
   std::stop_token stop{};
 };

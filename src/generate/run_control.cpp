@@ -43,7 +43,7 @@ double bound_disks(const Box& box, double grow, const RadiusDistribution& radii)
 
 void throw_memory_limit(std::size_t limit, const std::string& what, std::size_t estimate) {
   throw LimitError("the run would need more than the memory limit of " + std::to_string(limit) + " bytes: " + what +
-                       "; raise memory_limit (frontpack fill --memory-limit) or use larger radii",
+                       "; raise memory_limit (--memory-limit) or use larger radii",
                    estimate);
 }
 

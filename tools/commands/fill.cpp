@@ -2,7 +2,6 @@
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
-#include <charconv>
 #include <cmath>
 #include <cstdint>
 #include <filesystem>
@@ -14,7 +13,6 @@
 #include <sstream>
 #include <string>
 #include <string_view>
-#include <system_error>
 #include <utility>
 #include <vector>
 
@@ -33,42 +31,11 @@ namespace {
 
 constexpr const char* kDefaultRadius = frontpack::default_radius_spec;
 
-// --memory-limit: bytes, with an optional suffix K, M, G or T (powers of 1024: 512M, 2G); 0 leaves
-// the library's default (three quarters of the machine's memory).
-std::size_t parse_bytes(const char* option, const std::string& text) {
-  std::size_t digits = 0;
-  while (digits < text.size() && text[digits] >= '0' && text[digits] <= '9') {
-    ++digits;
-  }
-  int shift = -1;
-  if (digits == text.size()) {
-    shift = 0;
-  } else if (digits + 1 == text.size()) {
-    const std::string units = "KMGT";
-    const std::size_t u = units.find(static_cast<char>(std::toupper(static_cast<unsigned char>(text.back()))));
-    shift = u == std::string::npos ? -1 : 10 * static_cast<int>(u + 1);
-  }
-  if (digits == 0 || shift < 0) {
-    throw frontpack::OptionError(given_value(option, text) +
-                                 ": expected a number of bytes, with an optional suffix K, M, G or T (powers of "
-                                 "1024), e.g. 512M or 2G; 0 for three quarters of the machine's memory");
-  }
-  std::uint64_t value = 0;
-  const auto [end, ec] = std::from_chars(text.data(), text.data() + digits, value);
-  (void)end;
-  if (ec != std::errc{} || value > (std::numeric_limits<std::size_t>::max() >> shift)) {
-    throw frontpack::OptionError(given_value(option, text) + ": too large");
-  }
-  return static_cast<std::size_t>(value) << shift;
-}
-
 struct FillArgs {
   DomainSource src;
   std::string method = frontpack::to_string(frontpack::FillOptions{}.method);
   std::string radius;  // empty: kDefaultRadius
   std::string seed = "0";
-  std::string max_disks = std::to_string(frontpack::FillOptions{}.max_disks);
-  std::string memory_limit = "0";
   std::vector<std::string> outputs;
   std::string format;
   std::string json;
@@ -266,8 +233,9 @@ int run_fill(const FillArgs& a) {
   options.method = parse_method(a.method);
   options.radii = frontpack::parse_radii(spec);
   options.seed = parse_count("--seed", a.seed, std::numeric_limits<std::uint64_t>::max());
-  options.max_disks = parse_count("--max-disks", a.max_disks, std::numeric_limits<std::uint64_t>::max());
-  options.memory_limit = parse_bytes("--memory-limit", a.memory_limit);
+  const frontpack::Budget limits = budget(a.src);
+  options.max_disks = limits.max_count;
+  options.memory_limit = limits.memory_limit;
   options.stop = stop_token();
   apply_front_options(a, options);
   const std::vector<frontpack_tool::Output> outputs = frontpack_tool::resolve_outputs(a.outputs, a.format, false);
@@ -442,13 +410,6 @@ Command add_fill(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--radius", args->radius, std::string(kRadiusHelp) + " (default " + kDefaultRadius + ")");
   cmd->add_option("--seed", args->seed, "64-bit seed, 0 to 18446744073709551615 (same seed, same packing)")
-      ->capture_default_str();
-  cmd->add_option("--max-disks", args->max_disks,
-                  "refuse runs estimated beyond this many disks, and stop a run that reaches it (exit 9)")
-      ->capture_default_str();
-  cmd->add_option("--memory-limit", args->memory_limit,
-                  "bytes a run may take, e.g. 512M or 2G (K, M, G, T: powers of 1024); refused up front or stopped "
-                  "before it would take more (exit 5); 0: three quarters of the machine's memory")
       ->capture_default_str();
   cmd->add_option("-o,--output", args->outputs,
                   "output file, any number; format by extension: .csv, .txt/.yade (Yade), .data/.lmp (LAMMPS), "
