@@ -167,6 +167,27 @@ TEST_F(DxfReaderTest, EveryBadNumberIsNamedWithItsLineAndText) {
   expect_error(extrusion, Kind::bad_number, {"group 230", "'nan'"});
 }
 
+// The counts dxflib allocates by before their items arrive: a huge one would allocate gigabytes,
+// and an LWPOLYLINE's 90 other than its vertices drops vertices or adds (0, 0) ones.
+TEST_F(DxfReaderTest, CountsMatchWhatTheyCount) {
+  std::string more = square_with_hole();
+  more.replace(more.find(" 90\n4\n"), 7, " 90\n5\n");
+  expect_error(more, Kind::bad_number,
+               {"LWPOLYLINE (handle 2F, line 6)", "group 90 (line 12)", "'5' vertices, but the LWPOLYLINE has 4"});
+  std::string fewer = square_with_hole();
+  fewer.replace(fewer.find(" 90\n4\n"), 7, " 90\n3\n");
+  expect_error(fewer, Kind::bad_number, {"'3' vertices, but the LWPOLYLINE has 4"});
+  std::string huge = square_with_hole();
+  huge.replace(huge.find(" 90\n4\n"), 7, " 90\n2147483647\n");
+  expect_error(huge, Kind::bad_number, {"'2147483647' is not a whole number from 0 to"});
+  std::string none = square_with_hole();
+  none.erase(none.find(" 90\n4\n"), 7);
+  expect_error(none, Kind::bad_structure, {"LWPOLYLINE (handle 2F, line 6): no group 90"});
+  // In a block too, where nothing is read: a SPLINE's knot count.
+  const std::string blocks = "  0\nSECTION\n  2\nBLOCKS\n  0\nSPLINE\n 72\n2000000000\n  0\nENDSEC\n";
+  expect_error(blocks + square_with_hole(), Kind::bad_number, {"SPLINE (line 6)", "group 72 (line 8)"});
+}
+
 // Defect: an empty value line shifted the parse. An empty string value is a value.
 TEST_F(DxfReaderTest, AnEmptyValueLineIsAValue) {
   std::string text = square_with_hole();

@@ -231,6 +231,58 @@ void check_dxf_number(const DxfGroup& g, const std::string& source, const std::s
   }
 }
 
+std::string dxf_entity_name(std::string_view type, std::string_view handle, std::size_t line) {
+  const auto plain = [](std::string_view text) {
+    const bool word =
+        !text.empty() && text.size() <= kQuotedChars &&
+        text.find_first_not_of("ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789_") == std::string::npos;
+    return word ? std::string(text) : quote_text(text);
+  };
+  return plain(type) + " (" + (handle.empty() ? std::string() : "handle " + plain(handle) + ", ") + at_line(line) + ")";
+}
+
+void check_dxf_counts(const std::vector<DxfGroup>& groups, const std::string& source) {
+  for (std::size_t start = 0; start < groups.size();) {
+    std::size_t end = start + 1;
+    while (end < groups.size() && groups[end].code != 0) {
+      ++end;
+    }
+    const std::string_view type = groups[start].value;
+    if (groups[start].code == 0 && (type == "LWPOLYLINE" || type == "SPLINE" || type == "LEADER")) {
+      std::string_view handle;
+      long long vertices = 0;
+      for (std::size_t i = start + 1; i < end; ++i) {
+        handle = groups[i].code == 5 ? groups[i].value : handle;
+        vertices += groups[i].code == 10 ? 1 : 0;
+      }
+      const std::string name = dxf_entity_name(type, handle, groups[start].line);
+      const auto groups_in = static_cast<long long>(end - start);
+      bool counted = false;
+      for (std::size_t i = start + 1; i < end; ++i) {
+        const DxfGroup& g = groups[i];
+        const bool count = type == "LWPOLYLINE" ? g.code == 90
+                           : type == "SPLINE"   ? (g.code >= 72 && g.code <= 74)
+                                                : g.code == 76;
+        if (!count) {
+          continue;
+        }
+        counted = true;
+        const long long n = dxf_integer(g, 0, groups_in, source, name);
+        if (type == "LWPOLYLINE" && n != vertices) {
+          bad_number(
+              g, quote_text(g.value) + " vertices, but the LWPOLYLINE has " + std::to_string(vertices) + " (groups 10)",
+              source, name);
+        }
+      }
+      // dxflib keeps the previous LWPOLYLINE's count (and vertices) for one without its own.
+      if (type == "LWPOLYLINE" && !counted) {
+        throw DomainFileError(Kind::bad_structure, "no group 90 (its number of vertices)", source, name);
+      }
+    }
+    start = end;
+  }
+}
+
 const char* dxf_units_name(long long code) noexcept {
   static constexpr const char* kNames[] = {"unitless",
                                            "inches",

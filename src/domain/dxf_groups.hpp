@@ -30,6 +30,18 @@ struct DxfGroup {
 /// ENDSEC, a group between sections other than SECTION, EOF or a comment).
 [[nodiscard]] std::vector<DxfGroup> read_dxf_groups(std::string_view text, const std::string& source);
 
+/// Checks the counts dxflib allocates by before the items they count arrive (LWPOLYLINE group 90,
+/// SPLINE groups 72, 73 and 74, LEADER group 76), in every section: a whole number from 0 to the
+/// number of the entity's groups, and an LWPOLYLINE's 90 equal to its vertices (groups 10), since
+/// dxflib drops the vertices past the count and hands over (0, 0) for those missing (an LWPOLYLINE
+/// without a group 90 is refused: dxflib would take the previous one's). Throws DomainFileError
+/// (bad_number; bad_structure for a missing 90) naming the entity, the group, its line and the value.
+void check_dxf_counts(const std::vector<DxfGroup>& groups, const std::string& source);
+
+/// An entity's name in messages: "CIRCLE (handle 2F, line 120)"; a type or handle that is not a
+/// short word is quoted (quote_text), so that no message carries raw control bytes or a long line.
+[[nodiscard]] std::string dxf_entity_name(std::string_view type, std::string_view handle, std::size_t line);
+
 /// What a group code's value is, by the DXF reference's code ranges.
 enum class DxfValueType { text, real, integer };
 [[nodiscard]] DxfValueType dxf_value_type(int code) noexcept;

@@ -34,15 +34,6 @@ const std::set<std::string, std::less<>> kAnnotations = {"TEXT",    "MTEXT",    
 const std::set<std::string, std::less<>> kRead = {"LINE",     "ARC",    "CIRCLE", "LWPOLYLINE",
                                                   "POLYLINE", "VERTEX", "SEQEND"};
 
-// A type or handle for a message: as written when it is a short word (CIRCLE, 2F), else quoted
-// (escaped and cut, quote_text), so that no message carries raw control bytes or a long line.
-std::string plain(const std::string& text) {
-  const bool word =
-      !text.empty() && text.size() <= kQuotedChars &&
-      text.find_first_not_of("ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789_") == std::string::npos;
-  return word ? text : quote_text(text);
-}
-
 // A bulge as written, and the line of its value ("" when the vertex has none: 0).
 struct BulgeText {
   std::string text;
@@ -65,10 +56,7 @@ struct Record {
   std::size_t line = 0;
   bool in_entities = false;
   std::vector<BulgeText> vertices;  ///< LWPOLYLINE: one per group 10; VERTEX: its own
-  [[nodiscard]] std::string name() const {
-    return plain(type) + " (" + (handle.empty() ? std::string() : "handle " + plain(handle) + ", ") + "line " +
-           std::to_string(line) + ")";
-  }
+  [[nodiscard]] std::string name() const { return dxf_entity_name(type, handle, line); }
 };
 
 class Reader : public DL_CreationAdapter {
@@ -372,8 +360,8 @@ std::string units_of(const std::vector<DxfGroup>& groups, const std::string& sou
     } else if (section == "HEADER" && groups[i].code == 9 && groups[i].value == "$INSUNITS" &&
                groups[i + 1].code == 70) {
       const DxfGroup& g = groups[i + 1];
-      return dxf_units_name(
-          dxf_integer(g, 0, kDxfUnitsMax, source, "HEADER variable $INSUNITS (line " + std::to_string(g.line) + ")"));
+      return dxf_units_name(dxf_integer(g, 0, kDxfUnitsMax, source,
+                                        "HEADER variable $INSUNITS (line " + std::to_string(groups[i].line) + ")"));
     }
   }
   return {};
@@ -398,6 +386,7 @@ DxfContents read_dxf(const std::filesystem::path& path) {
   const std::string source = path.string();
   const std::string text = read_text_file(path);  // IoError with the project's message when unreadable
   const std::vector<DxfGroup> groups = read_dxf_groups(text, source);
+  check_dxf_counts(groups, source);
   std::string units = units_of(groups, source);
   // dxflib reads by path (its std::istream entry point reads nothing in 3.26): it reads the checked
   // groups, one value per line, from a memory file, so it sees what was checked and nothing else.
