@@ -139,6 +139,16 @@ TEST_F(DxfReaderTest, EveryCutPointIsRefusedOrReadsTheSameDomain) {
   }
 }
 
+TEST_F(DxfReaderTest, CrlfLinesAndAByteOrderMarkRead) {
+  const frontpack::DomainFile plain = read(square_with_hole());
+  std::string crlf;
+  for (const std::string& line : lines_of(square_with_hole())) {
+    crlf += line + " \r\n";
+  }
+  EXPECT_TRUE(same_domain(read(crlf).domain, plain.domain));
+  EXPECT_TRUE(same_domain(read("\xEF\xBB\xBF" + square_with_hole()).domain, plain.domain));
+}
+
 TEST_F(DxfReaderTest, WhatFollowsEofIsNotRead) {
   EXPECT_TRUE(same_domain(read(square_with_hole() + "junk\n  0\n").domain, read(square_with_hole()).domain));
 }

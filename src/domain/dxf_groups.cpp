@@ -31,7 +31,9 @@ std::string at_line(std::size_t line) {
 // removes them), with the number of lines the text holds.
 class Lines {
  public:
-  Lines(std::string_view text, const std::string& source) : text_(text), source_(source) {}
+  // A UTF-8 byte order mark before the first group is skipped (dxflib's strtol read past it).
+  Lines(std::string_view text, const std::string& source)
+      : text_(text.substr(text.starts_with("\xEF\xBB\xBF") ? 3 : 0)), source_(source) {}
 
   // The next line, or false at the end of the text.
   bool next(std::string_view& line) {
