@@ -201,6 +201,12 @@ class Reader : public DL_CreationAdapter {
   void done() {
     finish(current_);
     finish_polyline();
+    if (!error && pairs_ != groups_.size()) {
+      error = DomainFileError(
+          Kind::bad_structure,
+          "dxflib read " + std::to_string(pairs_) + " groups of " + std::to_string(groups_.size()) + ", not as checked",
+          source_);
+    }
   }
 
  private:

@@ -84,6 +84,7 @@ void dxf(const std::uint8_t* data, std::size_t size) {
     parsed.emplace(read(text));
   } catch (const Error& e) {
     check_message(e.what());
+    check(std::string(e.what()).find("not as checked") == std::string::npos, "dxflib reads the groups as checked");
     return;  // a clear, typed error: what bad input must get
   }
   const Domain& domain = parsed->domain;
