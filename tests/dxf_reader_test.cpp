@@ -149,6 +149,16 @@ TEST_F(DxfReaderTest, CrlfLinesAndAByteOrderMarkRead) {
   EXPECT_TRUE(same_domain(read("\xEF\xBB\xBF" + square_with_hole()).domain, plain.domain));
 }
 
+// Defect: a comment of exactly "dxflib" made dxflib throw std::out_of_range (its version stamp
+// is "dxflib X.Y.Z"); comments are not handed to dxflib.
+TEST_F(DxfReaderTest, CommentsAreNotRead) {
+  const frontpack::DomainFile plain = read(square_with_hole());
+  for (const std::string comment : {"dxflib", "dxflib ", "dxflib x", "hello"}) {
+    SCOPED_TRACE(comment);
+    EXPECT_TRUE(same_domain(read("999\n" + comment + "\n" + square_with_hole()).domain, plain.domain));
+  }
+}
+
 TEST_F(DxfReaderTest, WhatFollowsEofIsNotRead) {
   EXPECT_TRUE(same_domain(read(square_with_hole() + "junk\n  0\n").domain, read(square_with_hole()).domain));
 }

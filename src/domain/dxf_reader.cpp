@@ -13,6 +13,7 @@
 #include <set>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include "common/format.hpp"
 #include "common/numbers.hpp"
@@ -391,9 +392,12 @@ struct Fd {
 DxfContents read_dxf(const std::filesystem::path& path) {
   const std::string source = path.string();
   const std::string text = read_text_file(path);  // IoError with the project's message when unreadable
-  const std::vector<DxfGroup> groups = read_dxf_groups(text, source);
+  std::vector<DxfGroup> groups = read_dxf_groups(text, source);
   check_dxf_counts(groups, source);
   std::string units = units_of(groups, source);
+  // Comments (999) are not handed over: dxflib reads one that starts with "dxflib" as its own
+  // version stamp, and one of exactly "dxflib" made it throw std::out_of_range.
+  std::erase_if(groups, [](const DxfGroup& g) { return g.code == 999; });
   // dxflib reads by path (its std::istream entry point reads nothing in 3.26): it reads the checked
   // groups, one value per line, from a memory file, so it sees what was checked and nothing else.
   std::string checked;
