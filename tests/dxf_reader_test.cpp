@@ -5,6 +5,7 @@
 // whose arc is not representable are named as written; $INSUNITS is reported.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <fstream>
 #include <sstream>
 #include <string>
@@ -157,6 +158,29 @@ TEST_F(DxfReaderTest, CommentsAreNotRead) {
     SCOPED_TRACE(comment);
     EXPECT_TRUE(same_domain(read("999\n" + comment + "\n" + square_with_hole()).domain, plain.domain));
   }
+}
+
+// A circle of two ARCs on one circle, from angle a to b and back.
+std::string two_arcs(const std::string& a, const std::string& b) {
+  const std::string arc = "  0\nARC\n 10\n1\n 20\n2\n 40\n3\n";
+  return "  0\nSECTION\n  2\nENTITIES\n" + arc + " 50\n" + a + "\n 51\n" + b + "\n" + arc + " 50\n" + b + "\n 51\n" +
+         a + "\n  0\nENDSEC\n  0\nEOF\n";
+}
+
+// Defect: ARC angles -1e300 and 1e300 hung the reader (the sweep reduced by subtracting 360 from
+// 2e300). An angle beyond one turn is reduced modulo 360 exactly (fmod): it reads as its
+// reduced angle, and angles within a turn are used as written.
+TEST_F(DxfReaderTest, ArcAnglesBeyondOneTurnAreReducedExactly) {
+  const frontpack::DomainFile half = read(two_arcs("0", "180"));
+  EXPECT_TRUE(same_domain(read(two_arcs("720", "900")).domain, half.domain));
+  EXPECT_TRUE(same_domain(read(two_arcs("1080", "-1260")).domain, read(two_arcs("0", "-180")).domain));
+  // fmod(1.2345e299, 360) = 48, fmod(-7.77e300, 360) = -128.
+  const frontpack::DomainFile huge = read(two_arcs("1.2345e299", "-7.77e300"));
+  ASSERT_EQ(std::fmod(1.2345e299, 360.0), 48.0);
+  ASSERT_EQ(std::fmod(-7.77e300, 360.0), -128.0);
+  EXPECT_TRUE(same_domain(huge.domain, read(two_arcs("48", "-128")).domain));
+  // 1e300 and -1e300 are 0 turns from 0: two full circles, refused as such.
+  expect_error(two_arcs("-1e300", "1e300"), Kind::branching_contour, {"meets 3 other ends"});
 }
 
 TEST_F(DxfReaderTest, WhatFollowsEofIsNotRead) {

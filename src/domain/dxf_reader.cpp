@@ -145,27 +145,30 @@ class Reader : public DL_CreationAdapter {
     if (!wanted() || !plane_ok()) {
       return;
     }
-    double sweep_deg = d.angle2 - d.angle1;
-    while (sweep_deg <= 0 && std::isfinite(sweep_deg)) {
-      sweep_deg += 360;
+    if (!std::isfinite(d.angle1) || !std::isfinite(d.angle2)) {
+      fail(Kind::bad_curve, "non-finite start or end angle");
+      return;
     }
-    while (sweep_deg > 360) {
-      sweep_deg -= 360;
+    // An angle beyond one turn is reduced modulo 360 (fmod is exact), so that any finite angle
+    // names its direction and the sweep is in (0, 360] in one step (subtracting 360 from 2e300
+    // never ended); angles within a turn are used as written.
+    const auto turn = [](double a) { return std::abs(a) <= 360 ? a : std::fmod(a, 360.0); };
+    const double angle1 = turn(d.angle1);
+    const double angle2 = turn(d.angle2);
+    double sweep_deg = std::fmod(angle2 - angle1, 360.0);
+    if (sweep_deg <= 0) {
+      sweep_deg += 360;
     }
     constexpr double deg = std::numbers::pi / 180;
     Arc arc{
-        .centre = point(d.cx, d.cy, mirrored_), .radius = d.radius, .start = d.angle1 * deg, .sweep = sweep_deg * deg};
-    double end_angle = d.angle2 * deg;
+        .centre = point(d.cx, d.cy, mirrored_), .radius = d.radius, .start = angle1 * deg, .sweep = sweep_deg * deg};
+    double end_angle = angle2 * deg;
     if (mirrored_) {  // OCS z = -1: x mirrored, so angles a -> pi - a and the sweep turns clockwise
       arc.start = std::numbers::pi - arc.start;
       end_angle = std::numbers::pi - end_angle;
       arc.sweep = -arc.sweep;
     }
     check_circle(arc);
-    if (!std::isfinite(d.angle1) || !std::isfinite(d.angle2)) {
-      fail(Kind::bad_curve, "non-finite start or end angle");
-      return;
-    }
     Piece p;
     p.name = finished_.name();
     const Point a{arc.centre.x + arc.radius * std::cos(arc.start), arc.centre.y + arc.radius * std::sin(arc.start)};
