@@ -60,4 +60,10 @@ TEST(FuzzReplay, DiskFileCorpusAndRegressions) {
   EXPECT_GE(replay("disks", frontpack::fuzz::disks), 10U) << "the committed disk-file corpus went missing";
 }
 
+#if FRONTPACK_TEST_DXF
+TEST(FuzzReplay, DxfCorpusAndRegressions) {
+  EXPECT_GE(replay("dxf", frontpack::fuzz::dxf), 20U) << "the committed DXF corpus went missing";
+}
+#endif
+
 }  // namespace

@@ -111,14 +111,16 @@ frontpack::DomainFile load_file(const DomainSource& src, double default_deviatio
             .format = frontpack::DomainFormat::wkt,
             .contours = 0,
             .ignored_entities = 0,
-            .curves = {}};
+            .curves = {},
+            .units = {}};
   }
   if (src.from_periodic()) {
     return {.domain = periodic_domain(src.periodic, src.periodic_axes),
             .format = frontpack::DomainFormat::wkt,
             .contours = 0,
             .ignored_entities = 0,
-            .curves = {}};
+            .curves = {},
+            .units = {}};
   }
   if (src.file.empty()) {
     throw CLI::RequiredError("DOMAIN or --wkt");

@@ -31,7 +31,7 @@ test_packages=(lammps liggghts python3 python3-vtk9 python3-shapely yade python3
   python3-pytest python3-tqdm python3-matplotlib)
 # libFuzzer: Clang and its runtime (`fuzz`, and `test`, which fuzzes each target for a while).
 fuzz_packages=(clang libclang-rt-14-dev)
-fuzz_targets=(wkt fill disks)
+fuzz_targets=(wkt fill disks dxf)
 
 install_packages() {
   local missing=()

@@ -33,6 +33,15 @@ frontpack::DomainFile read_domain(const std::string& file, const std::string& fo
   return frontpack::read_domain_file(file, options);
 }
 
+std::string units_line(const frontpack::DomainFile& file) {
+  if (file.format != frontpack::DomainFormat::dxf) {
+    return {};
+  }
+  return "units:      " +
+         (file.units.empty() ? std::string("not stated (no $INSUNITS in the HEADER)") : file.units + " ($INSUNITS)") +
+         "; coordinates used as written\n";
+}
+
 std::string curve_lines(const frontpack::DomainFile& file, std::size_t max_lines) {
   if (file.curves.empty()) {
     return {};

@@ -16,6 +16,10 @@ namespace frontpack_tool {
                                                 const std::string& max_deviation, double default_deviation,
                                                 const frontpack::Budget& budget);
 
+/// DXF: the "units:" line, the drawing units the file's $INSUNITS names or that it names none
+/// (coordinates are used as written either way); "" for the other formats.
+[[nodiscard]] std::string units_line(const frontpack::DomainFile& file);
+
 /// "curves:" summary lines, one per curve (the first `max_lines`, then a count), or "" when the
 /// file has none.
 [[nodiscard]] std::string curve_lines(const frontpack::DomainFile& file, std::size_t max_lines);

@@ -90,6 +90,9 @@ struct DomainFile {
   std::size_t contours = 0;          ///< closed contours (rings) read
   std::size_t ignored_entities = 0;  ///< DXF annotation entities skipped (TEXT, MTEXT, DIMENSION, POINT, HATCH, ...)
   std::vector<CurveReport> curves;   ///< every arc, in file order
+  /// DXF: the drawing units its HEADER's $INSUNITS names ("millimeters", "inches", "unitless", ...);
+  /// empty when the file does not say, and for the other formats. Coordinates are never scaled.
+  std::string units;
 };
 
 /// Reads a domain from a WKT, DXF, GeoJSON or Shapefile file.

@@ -187,7 +187,10 @@ class DomainFileError : public Error {
     unsupported_entity,  ///< an entity or geometry type frontpack does not read (ELLIPSE, SPLINE, INSERT, a LineString)
     open_contour,        ///< a chain of LINE, ARC or open polyline entities that does not close
     branching_contour,   ///< three or more entity ends meet at one point
-    bad_curve,           ///< a non-finite or non-positive radius, a non-finite bulge or coordinate
+    bad_curve,           ///< a non-finite or non-positive radius, a bulge whose arc is not representable
+    truncated,           ///< DXF: the file ends before its EOF group (cut short)
+    bad_structure,       ///< DXF: a group code that is not one, a SECTION without ENDSEC, a group out of place
+    bad_number,          ///< DXF: a numeric group value that is not a finite number in range (or not whole)
   };
   DomainFileError(Kind kind, std::string detail, std::string source, std::string entity = {});
 

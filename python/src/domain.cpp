@@ -211,12 +211,14 @@ void bind_domain(py::module_& m) {
           curves.append(curve_dict(c));
         }
         out["curves"] = curves;
+        out["units"] = f.units;
         return out;
       },
       py::arg("path"), py::arg("format") = "auto", py::arg("max_deviation") = 0.0,
       py::arg("relative_deviation") = default_relative_deviation, py::arg("join_tolerance") = 1e-9,
-      "Domain.from_file with the reader's report: a dict of domain, format, contours, ignored_entities and curves "
-      "(one dict per arc: entity, centre, radius, sweep, domain_inside, deviation, segments, nudged).");
+      "Domain.from_file with the reader's report: a dict of domain, format, contours, ignored_entities, curves "
+      "(one dict per arc: entity, centre, radius, sweep, domain_inside, deviation, segments, nudged) and units "
+      "(DXF: the units $INSUNITS names, e.g. 'millimeters'; '' when the file names none).");
   m.def("has_dxf_reader", &has_dxf_reader, "Whether this build reads DXF domains.");
   m.def("has_gis_reader", &has_gis_reader, "Whether this build reads GeoJSON and Shapefile domains.");
 }

@@ -149,6 +149,20 @@ def test_domain_file_error_fields(test_data):
     assert str(err) == "%s: %s: %s" % (err.source, err.entity, err.detail)
 
 
+def test_dxf_units_and_truncation(test_data, tmp_path):
+    if not frontpack.has_dxf_reader():
+        pytest.skip("this build reads no DXF")
+    assert frontpack.read_domain_file(test_data / "cad" / "drum.dxf")["units"] == "meters"
+    assert frontpack.read_domain_file(str(test_data / "cad" / "drum.dxf"), "auto")["format"] == "dxf"
+    lines = (test_data / "cad" / "drum.dxf").read_text().splitlines(keepends=True)
+    cut = tmp_path / "cut.dxf"
+    cut.write_text("".join(lines[:-2]))  # without its EOF group
+    with pytest.raises(frontpack.DomainFileError) as e:
+        frontpack.Domain.from_file(cut)
+    assert e.value.kind == "truncated"
+    assert "the file ends before EOF, at line %d" % (len(lines) - 2) in str(e.value)
+
+
 def test_pickle_round_trip():
     d = frontpack.Domain.from_wkt("POLYGON((0 0,1 0,1 1,0 1,0 0),(0.1 0.1,0.1 0.2,0.3 0.1,0.1 0.1))")
     back = pickle.loads(pickle.dumps(d))

@@ -106,6 +106,9 @@ const char* to_string(DomainFileError::Kind kind) noexcept {
     case K::open_contour: return "open_contour";
     case K::branching_contour: return "branching_contour";
     case K::bad_curve: return "bad_curve";
+    case K::truncated: return "truncated";
+    case K::bad_structure: return "bad_structure";
+    case K::bad_number: return "bad_number";
   }
   return "unknown";
 }

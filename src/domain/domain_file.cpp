@@ -119,8 +119,12 @@ DomainFile read_domain_file(const std::filesystem::path& path, const DomainReadO
     case DomainFormat::wkt: {
       Domain d = Domain::from_wkt_file(path);
       const std::size_t rings = d.num_polygons() + d.num_holes();
-      return {
-          .domain = std::move(d), .format = DomainFormat::wkt, .contours = rings, .ignored_entities = 0, .curves = {}};
+      return {.domain = std::move(d),
+              .format = DomainFormat::wkt,
+              .contours = rings,
+              .ignored_entities = 0,
+              .curves = {},
+              .units = {}};
     }
     case DomainFormat::dxf: {
 #if FRONTPACK_HAVE_DXFLIB
@@ -136,7 +140,8 @@ DomainFile read_domain_file(const std::filesystem::path& path, const DomainReadO
               .format = DomainFormat::dxf,
               .contours = contours.size(),
               .ignored_entities = dxf.ignored,
-              .curves = std::move(curves)};
+              .curves = std::move(curves),
+              .units = std::move(dxf.units)};
 #else
       missing_reader(format, path, "dxflib", "FRONTPACK_WITH_DXFLIB");
 #endif
@@ -151,7 +156,12 @@ DomainFile read_domain_file(const std::filesystem::path& path, const DomainReadO
         rings += names.size();
       }
       Domain d = detail::polygons_to_domain(std::move(gis.polygons), gis.ring_names, source);
-      return {.domain = std::move(d), .format = format, .contours = rings, .ignored_entities = 0, .curves = {}};
+      return {.domain = std::move(d),
+              .format = format,
+              .contours = rings,
+              .ignored_entities = 0,
+              .curves = {},
+              .units = {}};
 #else
       missing_reader(format, path, "GDAL", "FRONTPACK_WITH_GDAL");
 #endif

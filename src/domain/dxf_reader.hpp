@@ -20,10 +20,12 @@ struct DxfContents {
   std::vector<Piece> open;      ///< LINEs, ARCs and open polylines, to be chained
   std::size_t ignored = 0;      ///< annotation entities skipped
   Box extent;                   ///< of every point and every circle
+  std::string units;            ///< $INSUNITS named ("millimeters"), or "" when absent
 };
 
-/// Reads the ENTITIES section of an ASCII DXF file. Throws IoError, and DomainFileError naming
-/// the file, the entity type, its handle and its line.
+/// Reads the ENTITIES section of an ASCII DXF file, after checking its group structure and its
+/// numbers (dxf_groups.hpp). Throws IoError, and DomainFileError naming the file, the entity type,
+/// its handle and its line, and the line and text of a bad value.
 [[nodiscard]] DxfContents read_dxf(const std::filesystem::path& path);
 
 }  // namespace frontpack::detail

@@ -44,6 +44,29 @@ if(FRONTPACK_WITH_DXFLIB)
     set_tests_properties(tool.cad_fill_in_true_circles tool.cad_fill_in_true_circles_pipes
                          PROPERTIES SKIP_RETURN_CODE 77 TIMEOUT 300)
   endif()
+  # What a DXF file must be (docs/cad-gis.md): cut short, bad numbers, broken structure and
+  # extreme bulges are refused (exit 3) naming the line and the text; $INSUNITS is said.
+  set(R ${CMAKE_CURRENT_SOURCE_DIR}/fuzz/regressions/dxf)
+  frontpack_tool_test(cad_truncated 3 "drum-cut-after-the-bore-radius-lost-the-bore: the file ends before EOF, at line 54 \\(inside section 'ENTITIES'\\)"
+    info ${R}/drum-cut-after-the-bore-radius-lost-the-bore --domain-format dxf)
+  frontpack_tool_test(cad_bulge_nan 3 "LWPOLYLINE \\(handle 2F, line 6\\): group 42 \\(line 20\\): 'nan' is not a finite number"
+    info ${R}/bulge-nan-read-as-a-straight-edge --domain-format dxf)
+  frontpack_tool_test(cad_bulge_hex 3 "group 42 \\(line 20\\): '0x10' is not a number"
+    info ${R}/bulge-0x10-read-as-0 --domain-format dxf)
+  frontpack_tool_test(cad_centre_nan 3 "CIRCLE \\(handle 30, line 34\\): group 10 \\(line 40\\): 'nan' is not a finite number"
+    fill ${R}/circle-centre-nan-moved-to-x-0 --domain-format dxf --radius constant:0.1)
+  frontpack_tool_test(cad_empty_radius 3 "group 40 \\(line 44\\): expected a number, got nothing"
+    info ${R}/empty-radius-read-as-an-uninitialised-double --domain-format dxf)
+  frontpack_tool_test(cad_tiny_bulge 3 "vertex 0: bulge '-1e-300' \\(line 20\\) is outside 1e-12 <= \\|bulge\\| <= 1e12"
+    info ${R}/bulge-minus-1e-300-named-a-subnormal-vertex --domain-format dxf)
+  frontpack_tool_test(cad_huge_bulge 3 "vertex 0: bulge '1e308' \\(line 20\\)"
+    info ${R}/bulge-1e308-said-radius-nan --domain-format dxf)
+  frontpack_tool_test(cad_lost_value 3 "line 10: group 0 '90' is not a name .*a value line may be missing"
+    info ${R}/lost-value-line-named-a-group-code-as-entity --domain-format dxf)
+  frontpack_tool_test(cad_units 0 "units: +meters \\(\\$INSUNITS\\)" info ${C}/drum.dxf)
+  set(O ${TOOL_OUT}/cad_fill_json_units)
+  frontpack_tool_check(cad_fill_json_units 0 "units: +meters" FILE_MATCHES ${O}/drum.json "\"units\": \"meters\""
+    ARGS fill ${C}/drum.dxf --radius uniform:0.01,0.03 --seed 2 --json ${O}/drum.json)
 else()
   frontpack_tool_test(cad_no_dxf_reader 5 "built without dxflib" info ${C}/drum.dxf)
 endif()

@@ -23,6 +23,12 @@ void wkt(const std::uint8_t* data, std::size_t size);
 /// nothing culled.
 void fill(const std::uint8_t* data, std::size_t size);
 
+/// read_domain_file on arbitrary text as DXF (written to a memory file: dxflib reads by path): it
+/// accepts or throws frontpack::Error with a printable, bounded message; an accepted domain has a
+/// positive finite area, a finite box and finite curves, and its rings written back as DXF
+/// polylines (17 significant digits) read as the same domain.
+void dxf(const std::uint8_t* data, std::size_t size);
+
 /// read_csv and read_yade on arbitrary text: each accepts or throws frontpack::Error; accepted
 /// disks are finite with positive radii and survive write + read bit for bit.
 void disks(const std::uint8_t* data, std::size_t size);

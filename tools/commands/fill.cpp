@@ -337,6 +337,9 @@ int run_fill(const FillArgs& a) {
     if (!file.curves.empty()) {
       j["domain"]["curves"] = curves_json(file);
     }
+    if (file.format == frontpack::DomainFormat::dxf) {
+      j["domain"]["units"] = file.units;  // "" when the file states none
+    }
     if (!types.empty()) {
       j["types"] = Json{{"rule", a.types}, {"disks_per_type", per_type}};
     }
@@ -370,7 +373,7 @@ int run_fill(const FillArgs& a) {
               << (options.jam ? ", jam " + fmt(p.stats.seconds_jam) : std::string()) << ", cull "
               << fmt(p.stats.seconds_cull) << ", overlap pass " << fmt(p.stats.seconds_overlap) << "), statistics "
               << fmt(seconds_stats) << " s\n"
-              << curve_lines(file, 10);
+              << units_line(file) << curve_lines(file, 10);
     if (!types.empty()) {
       std::cerr << "types:       " << per_type.size() << " (" << a.types << "):";
       for (std::size_t k = 0; k < per_type.size(); ++k) {

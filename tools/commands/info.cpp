@@ -41,7 +41,7 @@ int run_info(const DomainSource& src) {
             << (file.ignored_entities > 0 ? "ignored:    " + std::to_string(file.ignored_entities) +
                                                 " annotation entities (text, dimensions, hatches, points)\n"
                                           : std::string())
-            << curve_lines(file, 50);
+            << units_line(file) << curve_lines(file, 50);
   return ok;
 }
 
