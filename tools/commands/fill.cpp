@@ -242,6 +242,7 @@ int run_fill(const FillArgs& a) {
   const frontpack::TypeRule type_rule = a.types.empty() ? frontpack::TypeRule{} : frontpack::parse_type_rule(a.types);
   DeckPlan deck = plan_deck(a, type_rule.count());
   deck.options.stop = options.stop;
+  deck.options.budget = limits;
   std::vector<frontpack_tool::FileUse> inputs = domain_inputs(a.src);
   add_curve_input(spec, inputs);
   for (const std::string& region : type_rule.region_names) {
