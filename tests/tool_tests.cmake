@@ -443,6 +443,19 @@ frontpack_tool_test(fill_deck_is_a_file 2 "is not a directory"
 frontpack_tool_test(fill_deck_walls_too_large 5 "walls: .*use a smaller wall radius"
   fill --wkt "POLYGON((0 0,1 0,1 1,0 1,0 0),(0.5 0.5,0.5 0.51,0.51 0.51,0.51 0.5,0.5 0.5))" --radius uniform:0.02,0.04
   --deck lammps ${deck_dir} --density 2500 --wall-radius 0.1)
+# Curve segments: every curve's count is known before any is split, summed and held to --max-disks
+# and --memory-limit up front (40 circles at --max-deviation 1e-11 reached 6.1 GB); info and fill
+# alike.
+set(PIPES ${CMAKE_CURRENT_SOURCE_DIR}/data/cad/many_pipes.dxf)
+frontpack_tool_test(info_curve_segments_memory 5
+  "about 37[0-9][0-9][0-9][0-9][0-9] curve segments, needing about [0-9]+ bytes of memory, more than the limit of 104857600 bytes. use a larger max_deviation \\(--max-deviation\\) or raise memory_limit"
+  info ${PIPES} --max-deviation 1e-9 --memory-limit 100M)
+frontpack_tool_test(fill_curve_segments_max_disks 5
+  "about 37[0-9][0-9][0-9][0-9][0-9] curve segments, more than max_disks = 1000000. use a larger max_deviation"
+  fill ${PIPES} --max-deviation 1e-9 --max-disks 1000000)
+frontpack_tool_test(info_curve_segments_within 0 "radius 1\\.7492, 360 deg -> 6570 tangent segments"
+  info ${PIPES} --max-deviation 2e-7 --memory-limit 100M)
+
 # Wall disks: a radius below the coordinates' precision is refused with the smallest that works (it
 # gave 3 wall disks at one corner under a deck that said the rings were closed); the wall-disk count
 # is estimated before any is placed and held to --max-disks and --memory-limit (1e-10 ended in
@@ -455,10 +468,10 @@ foreach(w 1e-30 1e-300)
          --wall-radius ${w} --max-disks 0)
 endforeach()
 frontpack_tool_test(fill_deck_wall_count_default 5
-  "about 1600[0-9]+ wall disks, more than max_disks = 50000000; use a wall radius of at least 3\\.3e-07 or raise"
+  "about 1600[0-9]+ wall disks, more than max_disks = 50000000. use a wall radius of at least 3\\.3e-07 or raise"
   fill ${S}/l_shape.wkt --deck lammps ${deck_dir} --density 2500 --wall-radius 1e-8)
 frontpack_tool_test(fill_deck_wall_count_max_disks 5
-  "about 1600[0-9]+ wall disks, more than max_disks = 100000; use a wall radius of at least 0\\.00017 or raise"
+  "about 1600[0-9]+ wall disks, more than max_disks = 100000. use a wall radius of at least 0\\.00017 or raise"
   fill ${S}/l_shape.wkt --deck lammps ${deck_dir} --density 2500 --wall-radius 1e-5 --max-disks 100000)
 frontpack_tool_test(fill_deck_wall_count_memory 5
   "about 1600[0-9]+ wall disks, needing about [0-9]+ bytes of memory, more than the limit of 104857600 bytes"
