@@ -372,7 +372,7 @@ frontpack_tool_test(fill_memory_limit_too_large 5 "--memory-limit '9999999999999
 # that place no disk or stop at --max-disks. One test per class of cases.
 find_program(FRONTPACK_TOOL_PYTHON3 python3)
 if(FRONTPACK_TOOL_PYTHON3)
-  foreach(group Outputs Clobbering Outcomes Signals)
+  foreach(group Outputs Clobbering Outcomes DeckDirectories Signals)
     add_test(NAME tool.files_and_signals.${group}
       COMMAND ${FRONTPACK_TOOL_PYTHON3} ${CMAKE_CURRENT_SOURCE_DIR}/tool/files_and_signals.py
               $<TARGET_FILE:frontpack_tool> ${PROJECT_SOURCE_DIR}/shapes -k ${group})

@@ -104,7 +104,8 @@ void apply_front_options(const FillArgs& a, frontpack::FillOptions& options) {
   }
 }
 
-// The deck's options, checked before any work; the directory is created if missing.
+// The deck's options, checked before any work; the directory is created if missing (and removed
+// again if the run writes nothing: make_output_directory).
 struct DeckPlan {
   bool wanted = false;
   frontpack::DeckOptions options;
@@ -253,7 +254,7 @@ int run_fill(const FillArgs& a) {
     if (std::filesystem::exists(deck.dir) && !std::filesystem::is_directory(deck.dir)) {
       throw frontpack::IoError("--deck directory '" + deck.dir.string() + "' is not a directory", deck.dir.string());
     }
-    std::filesystem::create_directories(deck.dir);
+    frontpack_tool::make_output_directory(deck.dir);
     for (const std::string& name : frontpack::deck_file_names(deck.options.simulator)) {
       output_files.push_back({"--deck", deck.dir / name});
     }
