@@ -252,7 +252,8 @@ std::vector<Disk> wall_disks(const Domain& domain, double wall_radius, double rm
   const double smallest = smallest_radius_for(budget, count, perimeter, wall_radius, kBytesPerWallDisk);
   detail::check_count(budget, count, kBytesPerWallDisk, "wall disks",
                       smallest > 0 ? "use a wall radius of at least " + at_least(smallest)
-                                   : std::string("the domain has too many edges for wall disks"));
+                                   : std::string("simplify the domain (each edge and corner takes wall disks, "
+                                                 "whatever their radius)"));
 
   const Domain outside = detail::wall_complement(domain, wall_radius, rmin);
   std::vector<Disk> walls;
