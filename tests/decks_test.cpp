@@ -176,3 +176,21 @@ TEST(Walls, CountIsHeldToTheBudgetBeforeAnyIsPlaced) {
   o.budget.max_count = 200'000;
   EXPECT_EQ(refusal<fp::LimitError>([&] { (void)fp::make_deck(d, p.disks, {}, o); }), "");
 }
+
+// A slit 0.05 wide and 0.5 deep: no wall disk of radius 0.1 fits in it, and the chain closed
+// across its mouth with no gap, so the walls were accepted while disks of radius 0.01 could enter
+// the slit, leaving the domain. The chain must cover the ring: refused, naming the slit's corner.
+TEST(Walls, ASlitNoWallDiskFitsInIsRefused) {
+  const fp::Domain d = fp::Domain::from_wkt("POLYGON((0 0,1 0,1 1,0.525 1,0.525 0.5,0.475 0.5,0.475 1,0 1,0 0))");
+  const std::string m = refusal<fp::OptionError>([&] { (void)fp::wall_disks(d, 0.1, 0.01); });
+  EXPECT_NE(m.find("does not cover the outer ring of polygon 1: its vertex (0.525 0.5)"), std::string::npos) << m;
+  EXPECT_EQ(refusal<fp::OptionError>([&] { (void)fp::wall_disks(d, 0.02, 0.01); }), "");
+  // The comb's notches (0.1 wide, 1 deep) the same at wall radius 0.05; walls of 0.02 fit in them.
+  const fp::Domain comb = shape("comb");
+  EXPECT_NE(refusal<fp::OptionError>([&] { (void)fp::wall_disks(comb, 0.05, 0.01); }).find("its vertex (1.6 0.25)"),
+            std::string::npos);
+  EXPECT_EQ(refusal<fp::OptionError>([&] { (void)fp::wall_disks(comb, 0.02, 0.01); }), "");
+  // A narrow outside corner deeper than 2 (w + rmin) is closed by the disk where the offset lines
+  // meet (or the one just before it): accepted.
+  EXPECT_EQ(refusal<fp::OptionError>([&] { (void)fp::wall_disks(shape("concave_polygon"), 0.02, 0.01); }), "");
+}

@@ -57,6 +57,20 @@ void verify_wall_chain(const Domain& outside, const Ring& ring, std::span<const 
   // The margin covers the rounding of hypot and of the segment distance (a few ulps).
   const double reach = 2 * (wall_radius + rmin) * (1 - 1e-12);
   const std::size_t n = ring.size();
+  // Whether the wall disk centred at c closes the corner at vertex k: it leaves a gap narrower
+  // than 2 rmin to the lines of both edges that meet there (the disk placed where the two offset
+  // lines meet, or the last one before it, which kept it out as a near-duplicate).
+  const double touch = (wall_radius + 2 * rmin) * (1 - 1e-12);
+  const auto closes_corner = [&](Point c, std::size_t k) {
+    const Point v = ring[k];
+    for (const Point w : {ring[(k + n - 1) % n], ring[(k + 1) % n]}) {
+      const double len = std::hypot(w.x - v.x, w.y - v.y);
+      if (!(std::abs((w.x - v.x) * (c.y - v.y) - (w.y - v.y) * (c.x - v.x)) < touch * len)) {
+        return false;
+      }
+    }
+    return true;
+  };
   for (std::size_t i = 0; i < chain.size(); ++i) {
     const ChainDisk& a = chain[i];
     const ChainDisk& b = chain[(i + 1) % chain.size()];
@@ -77,7 +91,7 @@ void verify_wall_chain(const Domain& outside, const Ring& ring, std::span<const 
     const std::size_t to = last ? b.edge + n : b.edge;
     for (std::size_t k = a.edge + 1; k <= to; ++k) {
       const Point v = ring[k % n];
-      if (!(segment_distance(v, pa, pb) < reach)) {
+      if (!(segment_distance(v, pa, pb) < reach) && !closes_corner(pa, k % n) && !closes_corner(pb, k % n)) {
         throw OptionError(
             "walls: the chain of wall disks of radius " + format_double(wall_radius) + " does not cover " + where +
             ": its vertex " + format_point(v) + " is farther than 2 (wall radius + " + format_double(rmin) +

@@ -21,10 +21,10 @@ struct ChainDisk {
 };
 
 /// One ring's wall disks: the closed chain in ring order, and the smaller disks in the tips of
-/// narrow outside corners.
+/// narrow outside corners (each with the edge that ends at its corner).
 struct RingWalls {
   std::vector<ChainDisk> chain;
-  std::vector<Disk> tips;
+  std::vector<ChainDisk> tips;
 };
 
 /// The smallest wall radius the coordinates of `bbox` can hold: 8 ulps of the largest coordinate
@@ -53,9 +53,13 @@ struct RingWalls {
 ///     disk of radius rmin passes between them;
 ///   - the chain covers the ring: it goes round it once (the disks' edges in ring order), and every
 ///     ring vertex it passes over between two consecutive disks lies closer than 2 (wall_radius +
-///     rmin) to the segment between their centres (a notch no wall disk fits in is closed across
-///     its mouth; a stretch of ring with no wall disk is refused).
-/// Together: a disk of radius >= rmin inside the ring's side cannot reach the far side of the chain.
+///     rmin) to the segment between their centres, or is the corner that one of those two disks
+///     closes: it leaves a gap narrower than 2 rmin to the lines of both edges that meet there
+///     (the disk that closes a narrow outside corner, however deep its tip). So a pocket outside the ring that no wall
+///     disk reaches (a notch narrower than a wall disk, closed across its mouth) is at most 2 (wall_radius + rmin)
+///     deep; a deeper one, or a stretch of ring with no wall disk, is refused.
+/// Together: a disk of radius >= rmin inside the ring's side cannot reach the far side of the chain,
+/// nor go deeper than that into a pocket.
 void verify_wall_chain(const Domain& outside, const Ring& ring, std::span<const ChainDisk> chain, double wall_radius,
                        double rmin, const std::string& where);
 

@@ -175,7 +175,7 @@ RingWalls ring_walls(const Domain& outside, const Ring& ring, double wall_radius
       continue;
     }
     if (!found[i].chain) {
-      out.tips.push_back(candidates[i]);
+      out.tips.push_back({candidates[i], found[i].edge});
       continue;
     }
     // Skip near-duplicates (the end of one edge and the start of the next where they are collinear).
@@ -265,7 +265,9 @@ std::vector<Disk> wall_disks(const Domain& domain, double wall_radius, double rm
       const std::string where = (r == 0 ? std::string("the outer ring") : "hole " + std::to_string(r)) +
                                 " of polygon " + std::to_string(polygon + 1);
       detail::verify_wall_chain(outside, ring, found.chain, wall_radius, rmin, where);
-      walls.insert(walls.end(), found.tips.begin(), found.tips.end());
+      for (const detail::ChainDisk& t : found.tips) {
+        walls.push_back(t.disk);
+      }
       for (const detail::ChainDisk& c : found.chain) {
         walls.push_back(c.disk);
       }
