@@ -5,6 +5,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -119,4 +120,77 @@ TEST(Walls, TooLargeForASmallHoleIsRefused) {
       fp::Domain::from_wkt("POLYGON((0 0,1 0,1 1,0 1,0 0),(0.5 0.5,0.5 0.51,0.51 0.51,0.51 0.5,0.5 0.5))");
   EXPECT_THROW((void)fp::wall_disks(d, 0.1, 0.01), fp::OptionError);
   EXPECT_NO_THROW((void)fp::wall_disks(d, 0.004, 0.01));
+}
+
+namespace {
+
+// The message of the error `call` throws as `E`, or "" if it throws none.
+template <typename E, typename F>
+std::string refusal(F call) {
+  try {
+    call();
+  } catch (const E& e) {
+    return e.what();
+  }
+  return "";
+}
+
+}  // namespace
+
+// A wall radius below the precision of the coordinates (1e-30 at coordinates up to 2) gave three
+// wall disks at one corner, under a deck that said the walls closed every ring. It is refused,
+// with the smallest wall radius that the coordinates can hold, even with no count limit.
+TEST(Walls, BelowThePrecisionFloorIsRefusedNamingTheFloor) {
+  const fp::Domain d = shape("l_shape");
+  const fp::Budget unlimited{.max_count = 0, .memory_limit = std::numeric_limits<std::size_t>::max()};
+  for (const double w : {1e-30, 1e-200, 1e-300, 1e-12}) {
+    const std::string m = refusal<fp::OptionError>([&] { (void)fp::wall_disks(d, w, 0.01, unlimited); });
+    EXPECT_NE(m.find("below the precision floor"), std::string::npos) << w << ": " << m;
+    EXPECT_NE(m.find("use a wall radius of at least 3.6e-09"), std::string::npos) << w << ": " << m;
+  }
+}
+
+// The wall-disk count is estimated before any is placed and held to the budget: 1e-10 ended in
+// bad_alloc, 1e-6 made 16 million wall disks for 771 free ones.
+TEST(Walls, CountIsHeldToTheBudgetBeforeAnyIsPlaced) {
+  const fp::Domain d = shape("l_shape");  // perimeter 8: 16 / w wall disks along the edges
+  std::string m = refusal<fp::LimitError>([&] { (void)fp::wall_disks(d, 1e-8, 0.01); });
+  EXPECT_NE(m.find("about 1600"), std::string::npos) << m;
+  EXPECT_NE(m.find(" wall disks, more than max_disks = 50000000; use a wall radius of at least 3.3e-07"),
+            std::string::npos)
+      << m;
+  m = refusal<fp::LimitError>([&] { (void)fp::wall_disks(d, 1e-5, 0.01, {.max_count = 100'000}); });
+  EXPECT_NE(m.find("wall disks, more than max_disks = 100000; use a wall radius of at least 0.00017"),
+            std::string::npos)
+      << m;
+  m = refusal<fp::LimitError>(
+      [&] { (void)fp::wall_disks(d, 1e-5, 0.01, {.max_count = 0, .memory_limit = 10'000'000}); });
+  EXPECT_NE(m.find("wall disks, needing about"), std::string::npos) << m;
+  // Through the deck: DeckOptions::budget.
+  const fp::Packing p = fill(d, 0.02, 0.04);
+  fp::DeckOptions o{.simulator = fp::Simulator::lammps, .densities = {2500}, .wall_radius = 1e-5};
+  o.budget.max_count = 100'000;
+  m = refusal<fp::LimitError>([&] { (void)fp::make_deck(d, p.disks, {}, o); });
+  EXPECT_NE(m.find("wall disks, more than max_disks = 100000"), std::string::npos) << m;
+  o.wall_radius = 1e-4;
+  o.budget.max_count = 200'000;
+  EXPECT_EQ(refusal<fp::LimitError>([&] { (void)fp::make_deck(d, p.disks, {}, o); }), "");
+}
+
+// A slit 0.05 wide and 0.5 deep: no wall disk of radius 0.1 fits in it, and the chain closed
+// across its mouth with no gap, so the walls were accepted while disks of radius 0.01 could enter
+// the slit, leaving the domain. The chain must cover the ring: refused, naming the slit's corner.
+TEST(Walls, ASlitNoWallDiskFitsInIsRefused) {
+  const fp::Domain d = fp::Domain::from_wkt("POLYGON((0 0,1 0,1 1,0.525 1,0.525 0.5,0.475 0.5,0.475 1,0 1,0 0))");
+  const std::string m = refusal<fp::OptionError>([&] { (void)fp::wall_disks(d, 0.1, 0.01); });
+  EXPECT_NE(m.find("does not cover the outer ring of polygon 1: its vertex (0.525 0.5)"), std::string::npos) << m;
+  EXPECT_EQ(refusal<fp::OptionError>([&] { (void)fp::wall_disks(d, 0.02, 0.01); }), "");
+  // The comb's notches (0.1 wide, 1 deep) the same at wall radius 0.05; walls of 0.02 fit in them.
+  const fp::Domain comb = shape("comb");
+  EXPECT_NE(refusal<fp::OptionError>([&] { (void)fp::wall_disks(comb, 0.05, 0.01); }).find("its vertex (1.6 0.25)"),
+            std::string::npos);
+  EXPECT_EQ(refusal<fp::OptionError>([&] { (void)fp::wall_disks(comb, 0.02, 0.01); }), "");
+  // A narrow outside corner deeper than 2 (w + rmin) is closed by the disk where the offset lines
+  // meet (or the one just before it): accepted.
+  EXPECT_EQ(refusal<fp::OptionError>([&] { (void)fp::wall_disks(shape("concave_polygon"), 0.02, 0.01); }), "");
 }

@@ -372,7 +372,7 @@ frontpack_tool_test(fill_memory_limit_too_large 5 "--memory-limit '9999999999999
 # that place no disk or stop at --max-disks. One test per class of cases.
 find_program(FRONTPACK_TOOL_PYTHON3 python3)
 if(FRONTPACK_TOOL_PYTHON3)
-  foreach(group Outputs Clobbering Outcomes Signals)
+  foreach(group Outputs Clobbering Outcomes DeckDirectories Signals)
     add_test(NAME tool.files_and_signals.${group}
       COMMAND ${FRONTPACK_TOOL_PYTHON3} ${CMAKE_CURRENT_SOURCE_DIR}/tool/files_and_signals.py
               $<TARGET_FILE:frontpack_tool> ${PROJECT_SOURCE_DIR}/shapes -k ${group})
@@ -443,6 +443,39 @@ frontpack_tool_test(fill_deck_is_a_file 2 "is not a directory"
 frontpack_tool_test(fill_deck_walls_too_large 5 "walls: .*use a smaller wall radius"
   fill --wkt "POLYGON((0 0,1 0,1 1,0 1,0 0),(0.5 0.5,0.5 0.51,0.51 0.51,0.51 0.5,0.5 0.5))" --radius uniform:0.02,0.04
   --deck lammps ${deck_dir} --density 2500 --wall-radius 0.1)
+# Curve segments: every curve's count is known before any is split, summed and held to --max-disks
+# and --memory-limit up front (40 circles at --max-deviation 1e-11 reached 6.1 GB); info and fill
+# alike.
+set(PIPES ${CMAKE_CURRENT_SOURCE_DIR}/data/cad/many_pipes.dxf)
+frontpack_tool_test(info_curve_segments_memory 5
+  "about 37[0-9][0-9][0-9][0-9][0-9] curve segments, needing about [0-9]+ bytes of memory, more than the limit of 104857600 bytes. use a larger max_deviation \\(--max-deviation\\) or raise memory_limit"
+  info ${PIPES} --max-deviation 1e-9 --memory-limit 100M)
+frontpack_tool_test(fill_curve_segments_max_disks 5
+  "about 37[0-9][0-9][0-9][0-9][0-9] curve segments, more than max_disks = 1000000. use a larger max_deviation"
+  fill ${PIPES} --max-deviation 1e-9 --max-disks 1000000)
+frontpack_tool_test(info_curve_segments_within 0 "radius 1\\.7492, 360 deg -> 6570 tangent segments"
+  info ${PIPES} --max-deviation 2e-7 --memory-limit 100M)
+
+# Wall disks: a radius below the coordinates' precision is refused with the smallest that works (it
+# gave 3 wall disks at one corner under a deck that said the rings were closed); the wall-disk count
+# is estimated before any is placed and held to --max-disks and --memory-limit (1e-10 ended in
+# bad_alloc, 1e-6 wrote 16 million wall disks). Nothing of the deck is written.
+foreach(w 1e-30 1e-300)
+  frontpack_tool_check(fill_deck_wall_radius_floor_${w} 5
+    "walls: wall radius ${w} is below the precision floor of coordinates up to 2: .*use a wall radius of at least 3\\.6e-09"
+    NO_FILES ${TOOL_OUT}/fill_deck_wall_radius_floor_${w}/d/deck.data
+    ARGS fill ${S}/l_shape.wkt --deck lammps ${TOOL_OUT}/fill_deck_wall_radius_floor_${w}/d --density 2500
+         --wall-radius ${w} --max-disks 0)
+endforeach()
+frontpack_tool_test(fill_deck_wall_count_default 5
+  "about 1600[0-9]+ wall disks, more than max_disks = 50000000. use a wall radius of at least 3\\.3e-07 or raise"
+  fill ${S}/l_shape.wkt --deck lammps ${deck_dir} --density 2500 --wall-radius 1e-8)
+frontpack_tool_test(fill_deck_wall_count_max_disks 5
+  "about 1600[0-9]+ wall disks, more than max_disks = 100000. use a wall radius of at least 0\\.00017 or raise"
+  fill ${S}/l_shape.wkt --deck lammps ${deck_dir} --density 2500 --wall-radius 1e-5 --max-disks 100000)
+frontpack_tool_test(fill_deck_wall_count_memory 5
+  "about 1600[0-9]+ wall disks, needing about [0-9]+ bytes of memory, more than the limit of 104857600 bytes"
+  fill ${S}/l_shape.wkt --deck lammps ${deck_dir} --density 2500 --wall-radius 1e-5 --memory-limit 100M)
 set(O ${TOOL_OUT}/fill_deck_lammps)
 frontpack_tool_check(fill_deck_lammps 0 "types: +2 \\(size:0.05\\): [1-9][0-9]* of type 1, [1-9][0-9]* of type 2.*wrote: +.*in.frontpack \\(lammps deck\\)"
   FILES ${O}/deck/deck.data ${O}/deck/in.frontpack ${O}/deck/domain.wkt ${O}/p.csv FILE_MATCHES ${O}/p.csv "^x,y,r,type\n"

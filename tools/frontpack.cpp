@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "cli.hpp"
+#include "outputs.hpp"
 #include "signals.hpp"
 
 int main(int argc, char** argv) {
@@ -43,18 +44,25 @@ int main(int argc, char** argv) {
   try {
     for (const frontpack_tool::cli::Command& command : commands) {
       if (*command.app) {
-        return command.run();
+        const int code = command.run();
+        if (code != frontpack_tool::cli::ok) {
+          frontpack_tool::remove_new_directories();
+        }
+        return code;
       }
     }
     return frontpack_tool::cli::usage;
   } catch (const CLI::ParseError& e) {
+    frontpack_tool::remove_new_directories();
     std::cerr << "frontpack: " << e.what() << "\n";
     return frontpack_tool::cli::usage;
   } catch (const frontpack::CancelledError&) {
+    frontpack_tool::remove_new_directories();
     std::cerr << "\nfrontpack: interrupted by " << frontpack_tool::signal_name(signals.signal())
               << "; no output written\n";
     return signals.exit_code();
   } catch (const std::exception& e) {
+    frontpack_tool::remove_new_directories();
     const int code = frontpack_tool::cli::exit_code(e);
     std::cerr << "frontpack: " << (code == frontpack_tool::cli::internal ? "internal error: " : "") << e.what() << "\n";
     return code;

@@ -27,6 +27,29 @@ std::vector<PendingOutputs*>& live_batches() {
   return batches;
 }
 
+// The directories make_output_directory made, parents first, and whether any batch was committed
+// (then they hold the run's outputs and stay). Both under the output lock.
+std::vector<std::filesystem::path>& new_directories() {
+  static std::vector<std::filesystem::path> made;
+  return made;
+}
+
+bool& some_batch_committed() {
+  static bool committed = false;
+  return committed;
+}
+
+// Removes the new directories that are empty, deepest first; the caller holds the output lock.
+void remove_new_directories_locked() noexcept {
+  auto& made = new_directories();
+  if (!some_batch_committed()) {
+    for (auto it = made.rbegin(); it != made.rend(); ++it) {
+      (void)::rmdir(it->c_str());  // fails, harmlessly, on a directory that is not empty
+    }
+  }
+  made.clear();
+}
+
 }  // namespace
 
 std::string format_name(const OutputFormat& f) {
@@ -129,6 +152,30 @@ void check_files(const std::vector<FileUse>& inputs, const std::vector<FileUse>&
   }
 }
 
+void make_output_directory(const std::filesystem::path& dir) {
+  std::vector<std::filesystem::path> missing;
+  std::error_code ec;
+  for (std::filesystem::path p = dir; !p.empty() && !std::filesystem::exists(p, ec);) {
+    missing.push_back(p);
+    const std::filesystem::path parent = p.parent_path();
+    if (parent == p) {
+      break;
+    }
+    p = parent;
+  }
+  {
+    const std::lock_guard<std::mutex> lock(output_lock());
+    auto& made = new_directories();
+    made.insert(made.end(), missing.rbegin(), missing.rend());
+  }
+  std::filesystem::create_directories(dir);
+}
+
+void remove_new_directories() noexcept {
+  const std::lock_guard<std::mutex> lock(output_lock());
+  remove_new_directories_locked();
+}
+
 PendingOutputs::~PendingOutputs() {
   const std::lock_guard<std::mutex> lock(output_lock());
   files_.clear();  // each OutputFile removes its temporary file unless committed
@@ -183,6 +230,7 @@ void PendingOutputs::commit_all(const std::stop_token& stop) {
   }
   for (const auto& file : files_) {
     committed_ = true;
+    some_batch_committed() = true;
     file->commit();
   }
 }
@@ -198,6 +246,7 @@ bool PendingOutputs::remove_temporaries_now() noexcept {
       }
     }
   }
+  remove_new_directories_locked();
   return committed;
 }
 

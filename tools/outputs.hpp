@@ -57,6 +57,17 @@ struct FileUse {
 /// end for a typo in a directory). Throws UsageError naming both uses, or frontpack::IoError.
 void check_files(const std::vector<FileUse>& inputs, const std::vector<FileUse>& outputs);
 
+/// Makes `dir` and its missing parents for a command's outputs (a deck's directory), before the
+/// run so that its outputs can be checked and written there. The directories it makes are the
+/// run's own: unless an output batch is committed, remove_new_directories() takes them away again
+/// (those still empty, deepest first), as the signal watcher's last resort does. Throws
+/// std::filesystem::filesystem_error.
+void make_output_directory(const std::filesystem::path& dir);
+
+/// On a run's way out: removes the directories make_output_directory made, unless some output
+/// batch was committed (a run that writes nothing leaves no new directory). Never throws.
+void remove_new_directories() noexcept;
+
 /// The outputs of one command, written one by one and committed together. Thread-safe against
 /// the signal watcher: open() and commit_all() hold the process-wide output lock, and
 /// remove_temporaries_now() takes it, so a signal can never find a temporary file half-registered
@@ -82,7 +93,8 @@ class PendingOutputs {
   void commit_all(const std::stop_token& stop);
 
   /// For the signal watcher's last resort: removes the temporary files of every batch not yet
-  /// committed, and keeps holding the lock so that no commit can start. Returns whether some
+  /// committed (and, if none was, the directories make_output_directory made), and keeps holding
+  /// the lock so that no commit can start. Returns whether some
   /// batch was committed before. Never throws; never returns the lock (the caller exits).
   static bool remove_temporaries_now() noexcept;
 

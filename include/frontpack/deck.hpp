@@ -45,9 +45,17 @@ enum class Simulator : std::uint8_t { lammps, liggghts, yade };
 ///     corners too.
 /// Wall disks have radius `wall_radius` and sit `wall_radius` (1 + 1e-6) from the edges: a gap of
 /// 1e-6 wall radii keeps floating-point contact detection in the simulators from seeing a contact
-/// with a disk that touches the boundary. Throws OptionError if a ring cannot be closed so (a hole
-/// or a notch narrower than a wall disk: use a smaller wall radius), naming the ring and the place.
-[[nodiscard]] std::vector<Disk> wall_disks(const Domain& domain, double wall_radius, double rmin);
+/// with a disk that touches the boundary. These hold on the disks returned: each ring's chain is
+/// verified after it is built (outside, no gap, the whole ring covered), not assumed from how it
+/// was placed.
+///
+/// Throws OptionError if a ring cannot be closed so (a hole or a notch narrower than a wall disk:
+/// use a smaller wall radius), naming the ring and the place, or if `wall_radius` is below the
+/// precision floor of the coordinates (8 ulps of the largest coordinate magnitude / 1e-6: the
+/// message names it). Throws LimitError, before any wall disk is placed, if their count (about
+/// 2 perimeter / wall_radius, plus corners) exceeds `budget`, naming the smallest radius that fits.
+[[nodiscard]] std::vector<Disk> wall_disks(const Domain& domain, double wall_radius, double rmin,
+                                           const Budget& budget = {});
 
 /// What a deck sets up. Units are those of the domain and of the densities; with SI inputs (m,
 /// kg/m^2 or kg/m^3) the decks use `units si`.
@@ -86,7 +94,7 @@ struct DeckFile {
 /// and top become wall/gran planes), no wall disks and no mesh; Yade gets `O.periodic = True` with
 /// the cell's periods (a shear cell's walls as facets). docs/simulators.md, "Periodic cells". `types` is empty
 /// (every disk type 1) or holds one type >= 1 per disk. Throws OptionError (densities, thickness, gravity, walls),
-/// CancelledError.
+/// LimitError (the wall disks over `options.budget`), CancelledError.
 [[nodiscard]] std::vector<DeckFile> make_deck(const Domain& domain, std::span<const Disk> disks,
                                               std::span<const std::uint32_t> types, const DeckOptions& options);
 

@@ -206,6 +206,15 @@ std::size_t arc_segments(double radius, double sweep, bool inside, double deviat
   return std::max<std::size_t>(1, static_cast<std::size_t>(n));
 }
 
+double curve_segments(const Arc& arc, bool full_circle, double deviation, const std::string& entity) {
+  check_arc(arc, deviation, entity);
+  const double sweep = full_circle ? 2 * std::numbers::pi : arc.sweep;
+  const std::size_t chords = arc_segments(arc.radius, sweep, true, deviation, entity);
+  // An arc's tangent polyline has a segment more than its steps (arc_polyline); a circle's does not.
+  const std::size_t tangents = arc_segments(arc.radius, sweep, false, deviation, entity) + (full_circle ? 0 : 1);
+  return static_cast<double>(std::max({chords, tangents, std::size_t{full_circle ? 4U : 1U}}));
+}
+
 ArcPolyline arc_polyline(const Arc& given, Point a, Point b, bool inside, double deviation, const std::string& entity) {
   check_arc(given, deviation, entity);
   ArcPolyline out;

@@ -26,6 +26,12 @@ struct ArcPolyline {
 [[nodiscard]] std::size_t arc_segments(double radius, double sweep, bool inside, double deviation,
                                        const std::string& entity);
 
+/// The segments `arc` (a full circle if `full_circle`, its sweep then 2 pi) becomes for `deviation`
+/// on either side of the domain (the larger of arc_segments' chords and tangents): what reading a
+/// file counts for every curve before it splits any, to hold the sum to its Budget. Throws like
+/// arc_polyline for a bad arc or deviation, and like arc_segments past max_segments_per_curve.
+[[nodiscard]] double curve_segments(const Arc& arc, bool full_circle, double deviation, const std::string& entity);
+
 /// The polyline for `arc` between its given endpoints a (at arc.start) and b (at arc.start +
 /// arc.sweep). The radius is first moved by at most 1e-12 of itself, when that puts both endpoints
 /// exactly on the domain's side (they are on the circle up to rounding); `radius` says which was

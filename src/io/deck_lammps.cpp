@@ -105,7 +105,7 @@ std::vector<DeckFile> lammps_deck(const Domain& domain, std::span<const Disk> di
     return periodic_lammps_deck(domain, disks, types, options, p);
   }
   const double wall_radius = options.wall_radius > 0 ? options.wall_radius : p.rmin;
-  const std::vector<Disk> walls = wall_disks(domain, wall_radius, p.rmin);
+  const std::vector<Disk> walls = wall_disks(domain, wall_radius, p.rmin, options.budget);
   const std::uint32_t wall_type = p.types + 1;
 
   std::vector<Disk> all(disks.begin(), disks.end());

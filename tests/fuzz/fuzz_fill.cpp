@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "check.hpp"
+#include "frontpack/deck.hpp"
 #include "frontpack/domain.hpp"
 #include "frontpack/errors.hpp"
 #include "frontpack/fill.hpp"
@@ -27,7 +28,10 @@
 //                                 as a periodic cell in x and y instead, p % 4 == 2 as a shear cell
 //                                 (periodic in x, walls at the bottom and top), p % 4 == 3 fills
 //                                 the rings with the jam stage (FillOptions::jam), at most 2,000 disks
-//                                 and about 16,000 relaxation steps (run_fill())
+//                                 and about 16,000 relaxation steps (run_fill()); p % 4 == 0 with
+//                                 bytes after it: the budget knobs (Knobs), a small max_disks and
+//                                 memory_limit for the fill, then wall disks of a chosen radius
+//                                 (down to far below the coordinates' precision) within that budget
 //
 // Why this encoding: the inputs made before the boundary method and fill_voids (the 32 corpus
 // seeds and the 2 regressions committed before) must keep their meaning, and that layout read
@@ -462,6 +466,44 @@ void refused(const Error& e) {
   }
 }
 
+// The budget knobs (kind 7, p % 4 == 0): what the fill and the wall disks may make, and the wall
+// radius as a power of 2 times rmin, from 2^7 down to 2^-120 (the precision floor at unit
+// coordinates is about 2^-29): each derived count must be refused up front or made within the
+// budget, never found as an allocation failure or a long run.
+struct Knobs {
+  Budget budget;
+  double wall_scale = 1;  // wall radius / rmin
+};
+
+Knobs read_knobs(Bytes& in) {
+  Knobs k;
+  k.budget.max_count = std::size_t{1} << in.in_range(16);                     // 1 .. 32,768
+  const int memory = in.in_range(16);                                         // 0: three quarters of the machine's
+  k.budget.memory_limit = memory == 0 ? 0 : std::size_t{1} << (12 + memory);  // 8 KB .. 128 MB
+  const double mantissa = in.unit();  // read in this order with every compiler
+  k.wall_scale = std::ldexp(1.0 + mantissa, 7 - in.in_range(128));
+  return k;
+}
+
+// Wall disks within `knobs`: refused (LimitError, OptionError), or at most max_count of them, every
+// one outside the domain.
+void check_walls(const Domain& domain, double rmin, const Knobs& knobs) {
+  std::vector<Disk> walls;
+  try {
+    walls = wall_disks(domain, rmin * knobs.wall_scale, rmin, knobs.budget);
+  } catch (const Error& e) {
+    refused(e);
+    return;
+  }
+  if (verbose()) {
+    std::fprintf(stderr, "wall disks: %zu\n", walls.size());
+  }
+  check(walls.size() <= knobs.budget.max_count, "no more wall disks than max_count");
+  for (const Disk& w : walls) {
+    check(domain.locate(w.centre) == Location::outside, "every wall disk's centre outside the domain");
+  }
+}
+
 bool same_packing(const Packing& a, const Packing& b) {
   return a.disks.size() == b.disks.size() &&
          (a.disks.empty() || std::memcmp(a.disks.data(), b.disks.data(), a.disks.size() * sizeof(Disk)) == 0);
@@ -519,6 +561,7 @@ void fill(const std::uint8_t* data, std::size_t size) {
   const std::uint8_t repeat = in.byte();
   Periodicity periodicity = Periodicity::none;
   bool jam = false;
+  std::optional<Knobs> knobs;
   const std::size_t extension_at = in.pos();
   if (!in.empty()) {
     const int kind = in.in_range(8);  // 6, 7: keep the star rings
@@ -528,6 +571,9 @@ void fill(const std::uint8_t* data, std::size_t size) {
       const int p = in.in_range(4);
       periodicity = p == 1 ? Periodicity::xy : p == 2 ? Periodicity::x : Periodicity::none;
       jam = p == 3;
+      if (p == 0 && !in.empty()) {
+        knobs = read_knobs(in);
+      }
     }
   }
 
@@ -549,6 +595,10 @@ void fill(const std::uint8_t* data, std::size_t size) {
   options.window = window < 200 ? 5 : window % 8;  // mostly the paper's 5; sometimes 0 (whole front)..7
   options.fill_voids = (repeat & 0x08) == 0 || options.method == Method::boundary;  // boundary: always
   options.max_disks = jam ? 2'000 : 20'000;  // bounded work per input (a jam round relaxes every disk)
+  if (knobs) {
+    options.max_disks = std::min(options.max_disks, knobs->budget.max_count);
+    options.memory_limit = knobs->budget.memory_limit;
+  }
   options.jam = jam;
   try {
     // rmax from the domain's size down to 2^-10 of it; rmax / rmin up to 1024.
@@ -564,6 +614,10 @@ void fill(const std::uint8_t* data, std::size_t size) {
   } catch (const Error& e) {
     refused(e);
     return;
+  }
+  if (verbose() && knobs) {
+    std::fprintf(stderr, "knobs: max_count %zu memory_limit %zu wall radius %.17g rmin\n", knobs->budget.max_count,
+                 knobs->budget.memory_limit, knobs->wall_scale);
   }
   if (verbose()) {  // to reproduce a finding by hand
     const RadiusDistribution& r = options.radii.distribution();
@@ -596,6 +650,10 @@ void fill(const std::uint8_t* data, std::size_t size) {
   check(again.overlapping.empty(), "no two output disks overlap");
   if (repeat % 8 == 0) {  // now and then: the same input gives the same bits
     check(same_packing(run_fill(*domain, options), packing), "same seed, same packing");
+  }
+  if (knobs) {
+    check(packing.disks.size() <= knobs->budget.max_count, "no more disks than max_count");
+    check_walls(*domain, options.radii.min(), *knobs);
   }
 }
 

@@ -12,6 +12,9 @@ Usage: files_and_signals.py TOOL SHAPES_DIR [unittest options, e.g. -k Signals]
   128 + N within a second, no temporary file, every output file as it was before the run.
 - A fill that places no disk exits 8 and writes nothing; one stopped at --max-disks exits 9 and
   says so under --quiet.
+- A deck's directories (--deck SIMULATOR DIR, DIR and its missing parents) are made for the run
+  and removed again when it fails or is interrupted: a run that writes nothing leaves no new
+  directory.
 """
 import hashlib
 import json
@@ -224,6 +227,61 @@ class Outcomes(unittest.TestCase):
             summary = json.load(f)
         self.assertEqual(summary["radius_spec"], "uniform:0.01,0.05")
         self.assertFalse(summary["radius_spec_given"])
+
+
+class DeckDirectories(unittest.TestCase):
+    """--deck yade fresh/a/b: the directories a run makes are gone again unless it commits."""
+
+    def setUp(self):
+        self.s = Scratch()
+        os.mkdir(self.s.path("old"))
+
+    def tearDown(self):
+        self.s.cleanup()
+
+    def deck_args(self, radius):
+        return ["fill", "--wkt", SQUARE, "--radius", radius, "-q", "--density", "2500", "--deck", "yade"]
+
+    def test_failed_run_leaves_no_new_directory(self):
+        for deck in ("fresh/a/b", "old/new/c"):
+            r = run(*self.deck_args("constant:2"), self.s.path(deck))
+            self.assertEqual(r.returncode, 8, r.stderr)
+            self.assertEqual(self.s.entries(), ["old"], deck)
+            self.assertEqual(os.listdir(self.s.path("old")), [], deck)
+
+    def test_interrupted_run_leaves_no_new_directory(self):
+        for sig, deck in ((signal.SIGINT, "fresh/a/b"), (signal.SIGTERM, "old/new/c")):
+            p = subprocess.Popen([TOOL, *self.deck_args("uniform:0.0005,0.001"), self.s.path(deck)],
+                                 stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+            time.sleep(0.3)  # generation of about 540,000 disks: about a second
+            self.assertIsNone(p.poll(), "the run ended before its signal")
+            p.send_signal(sig)
+            code = wait_exit(p, 10)
+            _, err = p.communicate()
+            self.assertEqual(code, 128 + sig, err)
+            self.assertEqual(self.s.entries(), ["old"], deck)
+            self.assertEqual(os.listdir(self.s.path("old")), [], deck)
+
+    def test_blocked_run_leaves_no_new_directory(self):
+        # Blocked on a FIFO without reader the run cannot unwind: the signal watcher's last resort
+        # removes the new directories with the temporary files.
+        fifo = self.s.path("old/p.csv")
+        os.mkfifo(fifo)
+        p = subprocess.Popen([TOOL, *self.deck_args("uniform:0.05,0.1"), self.s.path("fresh/a/b"), "-o", fifo],
+                             stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+        time.sleep(1.0)  # the fill is done; the tool waits for the FIFO's reader
+        self.assertIsNone(p.poll())
+        p.send_signal(signal.SIGTERM)
+        code = wait_exit(p, 10)
+        _, err = p.communicate()
+        self.assertEqual(code, 143, err)
+        self.assertEqual(self.s.entries(), ["old"])
+        self.assertEqual(os.listdir(self.s.path("old")), ["p.csv"])
+
+    def test_complete_run_keeps_its_directories(self):
+        r = run(*self.deck_args("uniform:0.05,0.1"), self.s.path("fresh/a/b"))
+        self.assertEqual(r.returncode, 0, r.stderr)
+        self.assertIn("run.py", os.listdir(self.s.path("fresh/a/b")))
 
 
 def wait_exit(p, limit):

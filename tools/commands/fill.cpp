@@ -104,7 +104,8 @@ void apply_front_options(const FillArgs& a, frontpack::FillOptions& options) {
   }
 }
 
-// The deck's options, checked before any work; the directory is created if missing.
+// The deck's options, checked before any work; the directory is created if missing (and removed
+// again if the run writes nothing: make_output_directory).
 struct DeckPlan {
   bool wanted = false;
   frontpack::DeckOptions options;
@@ -242,6 +243,7 @@ int run_fill(const FillArgs& a) {
   const frontpack::TypeRule type_rule = a.types.empty() ? frontpack::TypeRule{} : frontpack::parse_type_rule(a.types);
   DeckPlan deck = plan_deck(a, type_rule.count());
   deck.options.stop = options.stop;
+  deck.options.budget = limits;
   std::vector<frontpack_tool::FileUse> inputs = domain_inputs(a.src);
   add_curve_input(spec, inputs);
   for (const std::string& region : type_rule.region_names) {
@@ -252,7 +254,7 @@ int run_fill(const FillArgs& a) {
     if (std::filesystem::exists(deck.dir) && !std::filesystem::is_directory(deck.dir)) {
       throw frontpack::IoError("--deck directory '" + deck.dir.string() + "' is not a directory", deck.dir.string());
     }
-    std::filesystem::create_directories(deck.dir);
+    frontpack_tool::make_output_directory(deck.dir);
     for (const std::string& name : frontpack::deck_file_names(deck.options.simulator)) {
       output_files.push_back({"--deck", deck.dir / name});
     }
