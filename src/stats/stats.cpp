@@ -252,7 +252,7 @@ PackingStats measure(const Domain& domain, std::span<const Disk> disks, const St
   const double w = s.band_width;
   // The walls (a periodic cell's real walls alone) and the disks with their images across the
   // periodic sides: what every measure below sees of the domain.
-  const EdgeDistanceIndex edges(domain, w > 0 ? w : std::sqrt(domain.area()) / 64);
+  const EdgeDistanceIndex edges(domain);
   s.walls = edges.has_walls();
   const detail::Periods periods(domain);
   const double reach = image_reach(options, s, hole_radii(options, s, disks.size()), periods);
