@@ -257,6 +257,17 @@ frontpack_tool_check(stats_voids 0
   ARGS stats ${SQ} ${TD}/good.csv --hole-radius 0.1 --hole-radius 0.3 --json ${O}/s.json)
 frontpack_tool_check(stats_bad_hole_radius 5 "--hole-radius '-1': expected a finite number > 0"
   ARGS stats ${SQ} ${TD}/good.csv --hole-radius=-1)
+# stats: the hole probes a radius needs (about 20 per cell and level down to rho / 32) are estimated
+# before they are made and held to --max-disks and --memory-limit (--hole-radius 1e-6 once ran
+# past 30 s at 4 GB); a radius within the budget still counts.
+frontpack_tool_check(stats_hole_probes_budget 5
+  "would make about [0-9.e+]+ hole probes, more than max_disks = 50000000; use a larger hole radius \\(--hole-radius\\)"
+  ARGS stats ${SQ} ${TD}/good.csv --hole-radius 1e-6)
+frontpack_tool_check(stats_hole_probes_memory 5
+  "would make about [0-9.e+]+ hole probes, needing about [0-9.e+]+ bytes of memory, more than the limit of 1048576 bytes"
+  ARGS stats ${SQ} ${TD}/good.csv --hole-radius 1e-4 --memory-limit 1M)
+frontpack_tool_check(stats_hole_probes_within 0 "holes: +[1-9][0-9]* taking radius 0\\.001"
+  ARGS stats ${SQ} ${TD}/good.csv --hole-radius 1e-3 --samples 10000)
 # stats --contact-gap: two disks 2^-20 apart touch for a gap of 2^-19, not for the default 1e-9 rmax.
 frontpack_tool_check(stats_contact_gap_default 0 " 0 contacts, 0 wall contacts, 2 rattlers \\(gap <= 1\\.25e-10 "
   ARGS stats ${SQ} ${TD}/near_contact.csv)

@@ -56,8 +56,9 @@ EmptyCircle largest_empty_circle(const Clearance& f, double tolerance, std::vect
                                  const std::stop_token& stop);
 
 /// The number of holes that take a disk of radius rho (holes.cpp). `cell_upper`: upper bounds
-/// of f on the grid cells of f (largest_empty_circle()'s), or empty.
-std::size_t count_holes(const Clearance& f, double rho, std::span<const double> cell_upper,
+/// of f on the grid cells of f (largest_empty_circle()'s), or empty. The squares it examines are
+/// estimated first and held to `budget` (LimitError), and stopped there if the estimate was short.
+std::size_t count_holes(const Clearance& f, double rho, std::span<const double> cell_upper, const Budget& budget,
                         const std::stop_token& stop);
 
 /// The coverage of the interior cells of side `side` (coverage.cpp). In a periodic cell `disks`

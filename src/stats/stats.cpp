@@ -195,7 +195,7 @@ void measure_voids(const Domain& domain, std::span<const Disk> disks, const deta
           s.holes.push_back(s.holes.back());  // (the default radii of equal disks)
           continue;
         }
-        s.holes.push_back({rho, none ? 0 : detail::count_holes(*f, rho, cell_upper, options.stop)});
+        s.holes.push_back({rho, none ? 0 : detail::count_holes(*f, rho, cell_upper, options.budget, options.stop)});
       }
     }
   }
