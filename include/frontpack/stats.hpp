@@ -238,7 +238,7 @@ struct CoverageBin {
 /// The covered fractions of the square cells of side cell_side (8 rmax by default) that lie wholly
 /// in the interior: their number, the 1st, 5th and 50th percentiles (nearest rank) and the
 /// standard deviation (over the cells), and the map of them, where seams and sparse patches show.
-/// Not computed (cells 0, the map empty) when the domain's box holds more than 16 million cells.
+/// The cells over the domain's box are held to StatsOptions::budget (LimitError past it).
 struct CellCoverage {
   double cell_side = 0;
   std::size_t cells = 0;  ///< 0: not computed, or no cell wholly in the interior
