@@ -48,10 +48,11 @@ class EdgeDistanceIndex {
 
   /// Calls f(closest point, distance) for each edge (possibly repeated) listed in the grid's cells
   /// within d of p; every edge at distance <= d from p is among them. The jam's forces sum over
-  /// these calls in this order. Needs the grid (the constructor with h); without it, nothing.
+  /// these calls in this order. Without the grid (the constructor without h): within().
   template <class F>
   void near(Point p, double d, F&& f) const {
     if (start_.empty()) {
+      within(p, d, f);
       return;
     }
     const std::size_t i0 = column(p.x - d);

@@ -105,4 +105,39 @@ TEST(EdgeDistance, EqualsAScanOfEveryEdgeBitForBit) {
   }
 }
 
+TEST(EdgeDistance, WithinListsEachEdgeInReachOnceInOrder) {
+  // The wall contacts' query: every edge whose distance is at most d, once each, in the order of
+  // the edges (and near() on an index without a grid the same), against a scan of every edge.
+  const fp::Domain domain = fp::Domain::from_polygons({fp::Polygon{star(40), {}}});
+  const fp::Ring& ring = domain.polygons()[0].outer;
+  const EdgeDistanceIndex edges(domain);
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> u(-1.2, 1.2);
+  std::size_t listed = 0;
+  for (std::size_t k = 0; k < 2'000; ++k) {
+    const fp::Point p{u(rng), u(rng)};
+    const double d = 0.01 * static_cast<double>(k % 40);
+    std::vector<double> expected;
+    for (std::size_t e = 0; e < ring.size(); ++e) {
+      const fp::Point a = ring[e];
+      const fp::Point b = ring[(e + 1) % ring.size()];
+      const double dx = b.x - a.x;
+      const double dy = b.y - a.y;
+      const double t = std::clamp(((p.x - a.x) * dx + (p.y - a.y) * dy) / (dx * dx + dy * dy), 0.0, 1.0);
+      const double dist = std::hypot(a.x + t * dx - p.x, a.y + t * dy - p.y);
+      if (dist <= d) {
+        expected.push_back(dist);
+      }
+    }
+    std::vector<double> got;
+    edges.within(p, d, [&got](fp::Point, double dist) { got.push_back(dist); });
+    std::vector<double> via_near;
+    edges.near(p, d, [&via_near](fp::Point, double dist) { via_near.push_back(dist); });
+    ASSERT_EQ(got, expected) << "p = (" << p.x << ", " << p.y << "), d " << d;
+    ASSERT_EQ(via_near, expected);
+    listed += got.size();
+  }
+  EXPECT_GT(listed, 1'000U);  // the reaches do meet edges
+}
+
 }  // namespace
