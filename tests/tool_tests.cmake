@@ -257,6 +257,29 @@ frontpack_tool_check(stats_voids 0
   ARGS stats ${SQ} ${TD}/good.csv --hole-radius 0.1 --hole-radius 0.3 --json ${O}/s.json)
 frontpack_tool_check(stats_bad_hole_radius 5 "--hole-radius '-1': expected a finite number > 0"
   ARGS stats ${SQ} ${TD}/good.csv --hole-radius=-1)
+# stats: the hole probes a radius needs (about 20 per cell and level down to rho / 32) are estimated
+# before they are made and held to --max-disks and --memory-limit (--hole-radius 1e-6 once ran
+# past 30 s at 4 GB); a radius within the budget still counts.
+frontpack_tool_check(stats_hole_probes_budget 5
+  "would make about [0-9.e+]+ hole probes, more than max_disks = 50000000; use a larger hole radius \\(--hole-radius\\)"
+  ARGS stats ${SQ} ${TD}/good.csv --hole-radius 1e-6)
+frontpack_tool_check(stats_hole_probes_memory 5
+  "would make about [0-9.e+]+ hole probes, needing about [0-9.e+]+ bytes of memory, more than the limit of 1048576 bytes"
+  ARGS stats ${SQ} ${TD}/good.csv --hole-radius 1e-4 --memory-limit 1M)
+# stats: the sample points, the coverage cells and a periodic cell's images are estimated before
+# they are made and held to the same budget (--samples 1e8 once ran on, a cell side of 1e-5 left
+# the coverage out without a word).
+frontpack_tool_check(stats_samples_budget 5
+  "about 100000000 sample points, more than max_disks = 50000000; use fewer sample points \\(--samples\\)"
+  ARGS stats ${SQ} ${TD}/good.csv --samples 100000000)
+frontpack_tool_check(stats_coverage_cells_budget 5
+  "about 10000000000 coverage cells, more than max_disks = 50000000; use a larger cell side \\(--cell-side\\)"
+  ARGS stats ${SQ} ${TD}/good.csv --cell-side 1e-5)
+frontpack_tool_check(stats_periodic_images_budget 5
+  "about 40602 periodic images, more than max_disks = 10000; use a larger periodic cell"
+  ARGS stats --periodic 1,1 ${TD}/one_disk.csv --cell-side 100 --samples 1000 --max-disks 10000)
+frontpack_tool_check(stats_hole_probes_within 0 "holes: +[1-9][0-9]* taking radius 0\\.001"
+  ARGS stats ${SQ} ${TD}/good.csv --hole-radius 1e-3 --samples 10000)
 # stats --contact-gap: two disks 2^-20 apart touch for a gap of 2^-19, not for the default 1e-9 rmax.
 frontpack_tool_check(stats_contact_gap_default 0 " 0 contacts, 0 wall contacts, 2 rattlers \\(gap <= 1\\.25e-10 "
   ARGS stats ${SQ} ${TD}/near_contact.csv)

@@ -77,8 +77,13 @@
 // narrower than that reach gets images of images (several periods), so any width is measured,
 // at a cost growing as (reach / period)^2 (beyond 1000 periods: std::invalid_argument).
 //
-// Cost: linear in the disks and the samples (uniform grids): about 0.5 s per million samples plus
-// 0.1 s per 50,000 disks (one core of an AMD EPYC). On a 958,549-disk packing of the unit
+// Cost: linear in the disks and the samples (uniform grids), and in E log E for the domain's E
+// edges whatever the disks' size against the edges' length (the distance to the walls is a
+// search of a hierarchy of the edges, domain/edge_distance.hpp): about 0.5 s per million samples
+// plus 0.1 s per 50,000 disks (one core of an AMD EPYC). What measuring makes is counted before it
+// is made and held to `budget` (LimitError): the sample points, the hole probes (which grow as the
+// disks' perimeter over the hole radius: a radius far below the disks' is refused), the coverage
+// cells and a periodic cell's images (docs/robustness.md, "Derived counts in the statistics"). On a 958,549-disk packing of the unit
 // square (uniform radii 0.0004-0.0006, docs/distributions.md has the command) the largest empty
 // circle adds 0.4-0.5 s, the coverage profile and the cell coverage together under 0.1 s, and
 // each hole radius 1-2 s (that packing has thousands of holes; a radius above the largest empty
@@ -238,7 +243,7 @@ struct CoverageBin {
 /// The covered fractions of the square cells of side cell_side (8 rmax by default) that lie wholly
 /// in the interior: their number, the 1st, 5th and 50th percentiles (nearest rank) and the
 /// standard deviation (over the cells), and the map of them, where seams and sparse patches show.
-/// Not computed (cells 0, the map empty) when the domain's box holds more than 16 million cells.
+/// The cells over the domain's box are held to StatsOptions::budget (LimitError past it).
 struct CellCoverage {
   double cell_side = 0;
   std::size_t cells = 0;  ///< 0: not computed, or no cell wholly in the interior

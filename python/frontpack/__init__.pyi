@@ -235,6 +235,8 @@ def measure(
     coverage_profile: bool = True,
     cell_coverage: bool = True,
     cell_side: float = 0.0,
+    max_disks: int = 50_000_000,
+    memory_limit: int = 0,
 ) -> dict[str, Any]: ...
 
 WriteFormat = Literal["csv", "yade", "lammps", "vtp", "svg"]

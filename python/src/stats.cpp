@@ -134,8 +134,8 @@ void bind_stats(py::module_& m) {
       "measure",
       [](const Domain& domain, const py::handle& disks, const std::optional<Radii>& requested, double contact_gap,
          double band_width, std::size_t samples, std::size_t histogram_bins, bool contacts, bool empty_circle,
-         bool holes, const std::vector<double>& hole_radii, bool coverage_profile, bool cell_coverage,
-         double cell_side) {
+         bool holes, const std::vector<double>& hole_radii, bool coverage_profile, bool cell_coverage, double cell_side,
+         std::size_t max_disks, std::size_t memory_limit) {
         const std::vector<Disk> ds = disks_from(disks);
         StatsOptions o;
         o.requested = requested;
@@ -150,6 +150,7 @@ void bind_stats(py::module_& m) {
         o.coverage_profile = coverage_profile;
         o.cell_coverage = cell_coverage;
         o.cell_side = cell_side;
+        o.budget = {.max_count = max_disks, .memory_limit = memory_limit};
         PackingStats s;
         {
           py::gil_scoped_release release;
@@ -161,13 +162,16 @@ void bind_stats(py::module_& m) {
       py::arg("contact_gap") = 0.0, py::arg("band_width") = 0.0, py::arg("samples") = std::size_t{1'000'000},
       py::arg("histogram_bins") = std::size_t{20}, py::arg("contacts") = true, py::arg("empty_circle") = true,
       py::arg("holes") = true, py::arg("hole_radii") = std::vector<double>{}, py::arg("coverage_profile") = true,
-      py::arg("cell_coverage") = true, py::arg("cell_side") = 0.0,
+      py::arg("cell_coverage") = true, py::arg("cell_side") = 0.0, py::arg("max_disks") = Budget{}.max_count,
+      py::arg("memory_limit") = Budget{}.memory_limit,
       "The statistics a DEM user checks a packing by (stats.hpp; docs/distributions.md has the definitions), as "
       "a dict: packing_fraction, void_ratio, interior_fraction and band_fraction (sampled, with their binomial "
       "standard errors), contacts, mean_coordination, rattlers, wall_contacts, segregation_ks_area, "
       "largest_empty_circle, holes ({radius: count}), coverage_profile, cell_coverage, and sizes (against "
       "`requested`, a Radii). Disks must have finite centres and radii > 0 (else ValueError naming the disk). "
-      "0 for contact_gap, band_width and cell_side means automatic (cell_side: 8 rmax). Deterministic.");
+      "0 for contact_gap, band_width and cell_side means automatic (cell_side: 8 rmax). What measuring makes "
+      "(sample points, hole probes, coverage cells, periodic images) is estimated first and held to max_disks "
+      "and memory_limit (bytes; 0: three quarters of the memory), as fill's disks are: LimitError. Deterministic.");
 }
 
 }  // namespace frontpack::python

@@ -208,3 +208,15 @@ def test_deck_and_wall_disks(packing):
     assert not frontpack.as_domain(DOMAIN).contains(walls).any()
     deck = frontpack.make_deck(DOMAIN, packing.disks, "lammps", densities=[2500])
     assert "in.frontpack" in deck and "read_data" in deck["in.frontpack"]
+
+
+def test_measure_holds_hole_probes_to_the_budget():
+    # A hole radius a millionth of the disks' asks for about 10^9 squares: refused up front with
+    # the figure, by count and by memory; a radius within the budget is counted.
+    disks = [[0.25, 0.25, 0.125], [0.5, 0.25, 0.125], [0.75, 0.75, 0.125], [0.25, 0.75, 0.125]]
+    with pytest.raises(frontpack.LimitError, match=r"about [0-9.e+]+ hole probes, more than max_disks = 50000000"):
+        frontpack.measure("POLYGON((0 0,1 0,1 1,0 1,0 0))", disks, samples=0, hole_radii=[1e-6])
+    with pytest.raises(frontpack.LimitError, match=r"hole probes, needing about .* more than the limit of 1048576 bytes"):
+        frontpack.measure("POLYGON((0 0,1 0,1 1,0 1,0 0))", disks, samples=0, hole_radii=[1e-4], memory_limit=1 << 20)
+    s = frontpack.measure("POLYGON((0 0,1 0,1 1,0 1,0 0))", disks, samples=0, hole_radii=[1e-3], max_disks=10_000_000)
+    assert list(s["holes"].values())[0] >= 1

@@ -121,7 +121,7 @@ void count_contacts(const DiskImages& images, double tol, PackingStats& s, std::
 // Wall contacts of one disk: distinct closest points of the edges it touches.
 std::size_t wall_contacts(const EdgeDistanceIndex& edges, const Disk& d, double tol) {
   std::vector<Point> points;
-  edges.near(d.centre, d.radius + tol, [&](Point q, double dist) {
+  edges.within(d.centre, d.radius + tol, [&](Point q, double dist) {
     if (dist - d.radius > tol) {
       return;
     }

@@ -8,6 +8,7 @@
 #include <numbers>
 #include <vector>
 
+#include "common/budget.hpp"
 #include "common/grid_cells.hpp"
 #include "common/stop.hpp"
 #include "stats/parts.hpp"
@@ -50,7 +51,7 @@ double area_in_box(double x0, double x1, double y0, double y1, double r) {
 }  // namespace
 
 void measure_cell_coverage(const Domain& domain, std::span<const Disk> disks, const EdgeDistanceIndex& edges, double w,
-                           double side, CellCoverage& out, const std::stop_token& stop) {
+                           double side, const Budget& budget, CellCoverage& out, const std::stop_token& stop) {
   out.cell_side = side;
   const Box b = domain.bbox();
   if (!(side > 0) || !(b.width() > 0) || !(b.height() > 0)) {
@@ -59,9 +60,9 @@ void measure_cell_coverage(const Domain& domain, std::span<const Disk> disks, co
   const Periods periods(domain);
   const double gx = std::ceil(b.width() / side);
   const double gy = std::ceil(b.height() / side);
-  if (!(gx * gy <= 16e6)) {
-    return;  // more cells than sample points would ever give: not computed
-  }
+  // Per cell: its index and map entry, and for an interior cell its covered area.
+  check_count(budget, gx * gy, sizeof(std::int64_t) + 2 * sizeof(double), "coverage cells",
+              "use a larger cell side (--cell-side)");
   const std::size_t nx = std::max<std::size_t>(static_cast<std::size_t>(gx), 1);
   const std::size_t ny = std::max<std::size_t>(static_cast<std::size_t>(gy), 1);
   // A cell is interior when its centre is inside the domain and no edge comes within band_width

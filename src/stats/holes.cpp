@@ -10,6 +10,16 @@
 // certified to have f >= rho: a hole where a disk of radius rho (1 + 1/32) fits is never
 // missed, and two holes are counted as one only when {f >= rho (1 - 1/16)} joins them.
 //
+// The cost. The squares examined (probes) grow as the length of the level set {f = rho} over the
+// leaves' side rho / 22.6: about 20 per grid cell and level below the cell's, so a radius far below
+// the disks' asks for millions per cell (the radius 1e-6 in 5 disks of 0.125: about 10^8 per
+// cell). Before the search, the squares are examined down to kEstimateDepth levels below the grid's
+// (at most 85 a cell); each square left open there yields about twice as many at every further
+// level (a curve met by a square meets two of its four quarters), so the probes are estimated as
+// those made plus 4 n (2^(D - kEstimateDepth) - 1), n the open squares and D the leaves' depth,
+// and held to StatsOptions::budget (detail::check_count) before the search; the search stops with
+// the same LimitError if it exceeds the budget all the same.
+//
 // A periodic cell: {f >= rho} continues across a periodic side, and the grid's part beyond the
 // cell's high sides repeats the cell's low sides. A leaf is also joined with every leaf that its
 // translate by a period (one or both axes, either way) touches, so a hole across a side, or seen
@@ -17,9 +27,12 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <numeric>
+#include <string_view>
 #include <vector>
 
+#include "common/budget.hpp"
 #include "common/stop.hpp"
 #include "stats/clearance.hpp"
 #include "stats/parts.hpp"
@@ -30,6 +43,15 @@ namespace {
 
 // Leaf coordinates stay below 2^62: 2^24 grid cells per axis, halved at most 38 times.
 constexpr int kMaxDepth = 38;
+
+// The levels below the grid's examined to estimate the probes (see the file's comment).
+constexpr int kEstimateDepth = 3;
+
+// The memory a probe may take: a leaf (32 bytes), its parent and counted marks.
+constexpr double kBytesPerProbe = 40;
+
+constexpr std::string_view kWhat = "hole probes";
+constexpr std::string_view kAdvice = "use a larger hole radius (--hole-radius)";
 
 // A leaf: depth below its grid cell and coordinates in the squares of that depth over the whole
 // grid (grid cell (i, j) at depth d spans x in [i 2^d, (i + 1) 2^d)).
@@ -45,8 +67,21 @@ struct Leaf {
 
 class HoleSearch {
  public:
-  HoleSearch(const Clearance& f, double rho)
-      : f_(f), rho_(rho), delta_(rho / 32), lists_(kMaxDepth + 1), first_(f.nx() * f.ny() + 1, 0) {}
+  // A search down to depth `limit` below the grid cells (kMaxDepth: the whole search; less: the
+  // estimate, which keeps no leaves), stopped by a LimitError past `allowed` probes.
+  HoleSearch(const Clearance& f, double rho, int limit, const Budget& budget, double allowed)
+      : f_(f),
+        rho_(rho),
+        delta_(rho / 32),
+        limit_(limit),
+        budget_(budget),
+        allowed_(allowed),
+        lists_(kMaxDepth + 1),
+        first_(f.nx() * f.ny() + 1, 0) {}
+
+  // The squares examined so far, and those left open at the depth limit.
+  [[nodiscard]] double probes() const noexcept { return probes_; }
+  [[nodiscard]] double open_at_limit() const noexcept { return open_at_limit_; }
 
   // A grid cell known to hold no point with f >= rho.
   void skip_cell(std::size_t c) { first_[c + 1] = leaves_.size(); }
@@ -63,6 +98,9 @@ class HoleSearch {
 
   void visit(const Square& q, std::span<const std::uint32_t> list, Side side, int depth, std::int64_t x,
              std::int64_t y) {
+    if (++probes_ > allowed_) {
+      check_count(budget_, probes_, kBytesPerProbe, kWhat, kAdvice);  // throws
+    }
     std::vector<std::uint32_t>& keep = lists_[static_cast<std::size_t>(depth)];
     const SquareBounds b = f_.bound(q, list, side, rho_, &keep);
     if (b.pruned) {
@@ -71,7 +109,13 @@ class HoleSearch {
     const double hd = q.half_diagonal();
     const bool full = b.certain && b.value - hd >= rho_;
     if (full || hd <= delta_ || depth == kMaxDepth) {
-      leaves_.push_back({depth, x, y, full || (b.certain && b.value >= rho_)});
+      if (limit_ == kMaxDepth) {
+        leaves_.push_back({depth, x, y, full || (b.certain && b.value >= rho_)});
+      }
+      return;
+    }
+    if (depth == limit_) {
+      ++open_at_limit_;
       return;
     }
     const double a = q.a / 2;
@@ -134,6 +178,11 @@ class HoleSearch {
   const Clearance& f_;
   double rho_;
   double delta_;
+  int limit_;
+  const Budget& budget_;
+  double allowed_;
+  double probes_ = 0;
+  double open_at_limit_ = 0;
   std::vector<std::vector<std::uint32_t>> lists_;
   std::vector<Leaf> leaves_;        // grid cell by grid cell, each cell's sorted
   std::vector<std::size_t> first_;  // grid cell c's leaves: [first_[c], first_[c + 1])
@@ -206,14 +255,18 @@ class HoleSearch {
   }
 };
 
-}  // namespace
+// The probes the budget allows: max_count, and the memory allowed over kBytesPerProbe (each
+// unlimited when 0).
+double allowed_probes(const Budget& budget) {
+  constexpr double kNone = std::numeric_limits<double>::infinity();
+  const double memory = memory_allowed(budget);
+  return std::min(budget.max_count > 0 ? static_cast<double>(budget.max_count) : kNone,
+                  memory > 0 ? std::floor(memory / kBytesPerProbe) : kNone);
+}
 
-std::size_t count_holes(const Clearance& f, double rho, std::span<const double> cell_upper,
-                        const std::stop_token& stop) {
-  if (!(rho > 0)) {
-    return 0;
-  }
-  HoleSearch search(f, rho);
+// Runs the search over the grid cells (those whose upper bound reaches rho).
+void search_cells(HoleSearch& search, const Clearance& f, double rho, std::span<const double> cell_upper,
+                  const std::stop_token& stop) {
   std::vector<std::uint32_t> list;
   for (std::size_t c = 0; c < f.nx() * f.ny(); ++c) {
     throw_if_stopped(stop, c);
@@ -224,6 +277,27 @@ std::size_t count_holes(const Clearance& f, double rho, std::span<const double> 
     f.block(c % f.nx(), c / f.nx(), list);
     search.visit_cell(c, list);
   }
+}
+
+}  // namespace
+
+std::size_t count_holes(const Clearance& f, double rho, std::span<const double> cell_upper, const Budget& budget,
+                        const std::stop_token& stop) {
+  if (!(rho > 0)) {
+    return 0;
+  }
+  const double allowed = allowed_probes(budget);
+  // D, the depth of the smallest leaves: the grid cell's half-diagonal halved until rho / 32.
+  const double levels = std::ceil(std::log2(f.cell(0, 0).half_diagonal() / (rho / 32)));
+  const int depth = levels > 0 ? static_cast<int>(std::min(levels, static_cast<double>(kMaxDepth))) : 0;
+  if (depth > kEstimateDepth) {
+    HoleSearch estimate(f, rho, kEstimateDepth, budget, allowed);
+    search_cells(estimate, f, rho, cell_upper, stop);
+    const double more = 4 * estimate.open_at_limit() * (std::ldexp(1.0, depth - kEstimateDepth) - 1);
+    check_count(budget, estimate.probes() + more, kBytesPerProbe, kWhat, kAdvice);
+  }
+  HoleSearch search(f, rho, kMaxDepth, budget, allowed);
+  search_cells(search, f, rho, cell_upper, stop);
   return search.components(stop);
 }
 

@@ -56,14 +56,16 @@ EmptyCircle largest_empty_circle(const Clearance& f, double tolerance, std::vect
                                  const std::stop_token& stop);
 
 /// The number of holes that take a disk of radius rho (holes.cpp). `cell_upper`: upper bounds
-/// of f on the grid cells of f (largest_empty_circle()'s), or empty.
-std::size_t count_holes(const Clearance& f, double rho, std::span<const double> cell_upper,
+/// of f on the grid cells of f (largest_empty_circle()'s), or empty. The squares it examines are
+/// estimated first and held to `budget` (LimitError), and stopped there if the estimate was short.
+std::size_t count_holes(const Clearance& f, double rho, std::span<const double> cell_upper, const Budget& budget,
                         const std::stop_token& stop);
 
-/// The coverage of the interior cells of side `side` (coverage.cpp). In a periodic cell `disks`
-/// are DiskImages::all() with a reach of side + rmax at least (a square wraps across a side).
+/// The coverage of the interior cells of side `side` (coverage.cpp), their count over the domain's
+/// box held to `budget` first (LimitError). In a periodic cell `disks` are DiskImages::all() with a
+/// reach of side + rmax at least (a square wraps across a side).
 void measure_cell_coverage(const Domain& domain, std::span<const Disk> disks, const EdgeDistanceIndex& edges, double w,
-                           double side, CellCoverage& out, const std::stop_token& stop);
+                           double side, const Budget& budget, CellCoverage& out, const std::stop_token& stop);
 
 /// The radius with half of the area (sum of r^2) at or below it; sorts r. 0 for none.
 double median_by_area(std::vector<double>& r);

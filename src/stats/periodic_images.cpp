@@ -6,6 +6,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "common/budget.hpp"
 #include "common/format.hpp"
 
 namespace frontpack::detail {
@@ -62,11 +63,14 @@ Location locate_wrapped(const Domain& domain, const Periods& periods, Point p) n
   return domain.locate(periods.any() ? wrap(periods, p) : p);
 }
 
-DiskImages::DiskImages(const Periods& periods, std::span<const Disk> disks, double reach)
+DiskImages::DiskImages(const Periods& periods, std::span<const Disk> disks, double reach, const Budget& budget)
     : originals_(disks.size()), all_(disks) {
   if (!periods.any() || disks.empty()) {
     return;
   }
+  const double per_disk = (1 + 2 * reach / periods.lx) * (periods.y ? 1 + 2 * reach / periods.ly : 1);
+  check_count(budget, static_cast<double>(disks.size()) * per_disk, sizeof(Disk) + sizeof(Image), "periodic images",
+              "use a larger periodic cell, or a smaller hole radius or cell side (--hole-radius, --cell-side)");
   const Box& c = periods.cell;
   storage_.assign(disks.begin(), disks.end());
   for (std::size_t k = 0; k < disks.size(); ++k) {

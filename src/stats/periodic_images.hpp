@@ -17,6 +17,7 @@
 #include <span>
 #include <vector>
 
+#include "frontpack/budget.hpp"
 #include "frontpack/domain.hpp"
 #include "frontpack/geometry.hpp"
 
@@ -46,7 +47,10 @@ class DiskImages {
   /// its centre within `reach` of the cell on each axis (j = 0 unless y is periodic). As many
   /// periods as `reach` spans are tried, so a cell narrower than the reach gets every image it
   /// needs (at a cost growing as (reach / period)^2). Precondition: the centres lie in the cell.
-  DiskImages(const Periods& periods, std::span<const Disk> disks, double reach);
+  /// The disks and images, about n (1 + 2 reach / lx) (1 + 2 reach / ly) for centres spread over
+  /// the cell (the second factor 1 unless y is periodic), are held to `budget` before any is made
+  /// (detail::check_count: LimitError).
+  DiskImages(const Periods& periods, std::span<const Disk> disks, double reach, const Budget& budget);
   DiskImages(const DiskImages&) = delete;  // all() may point into storage_
   DiskImages& operator=(const DiskImages&) = delete;
 

@@ -15,6 +15,7 @@
 #include <utility>
 #include <vector>
 
+#include "common/budget.hpp"
 #include "common/format.hpp"
 #include "common/stop.hpp"
 #include "stats/clearance.hpp"
@@ -163,7 +164,7 @@ void measure_voids(const Domain& domain, std::span<const Disk> disks, const deta
     const double exact_to = reach - rmax - f->side();
     const double all = rmax + f->side() + 0.5 * std::hypot(periods.lx, periods.ly) * (1 + 1e-9);
     const auto widen = [&] {
-      wider.emplace(periods, disks, all);
+      wider.emplace(periods, disks, all, options.budget);
       f.emplace(domain, *wider, edges);
     };
     const bool can_widen = periods.any() && all > reach;
@@ -195,13 +196,13 @@ void measure_voids(const Domain& domain, std::span<const Disk> disks, const deta
           s.holes.push_back(s.holes.back());  // (the default radii of equal disks)
           continue;
         }
-        s.holes.push_back({rho, none ? 0 : detail::count_holes(*f, rho, cell_upper, options.stop)});
+        s.holes.push_back({rho, none ? 0 : detail::count_holes(*f, rho, cell_upper, options.budget, options.stop)});
       }
     }
   }
   if (options.cell_coverage && !disks.empty()) {
     detail::measure_cell_coverage(domain, images.all(), edges, s.band_width, cell_side(options, s.sizes.rmax),
-                                  s.cell_coverage, options.stop);
+                                  options.budget, s.cell_coverage, options.stop);
   }
 }
 
@@ -250,13 +251,16 @@ PackingStats measure(const Domain& domain, std::span<const Disk> disks, const St
           : std::max(1e-9 * rmax, 0x1p-42 * std::min(domain.max_abs_coordinate() + 5 * rmax,
                                                      std::numeric_limits<double>::max()));  // (finite for any radius)
   const double w = s.band_width;
+  // The sample points are made a row at a time (memory of a row), but each costs a point location.
+  detail::check_count(options.budget, static_cast<double>(options.samples), 0, "sample points",
+                      "use fewer sample points (--samples)");
   // The walls (a periodic cell's real walls alone) and the disks with their images across the
   // periodic sides: what every measure below sees of the domain.
-  const EdgeDistanceIndex edges(domain, w > 0 ? w : std::sqrt(domain.area()) / 64);
+  const EdgeDistanceIndex edges(domain);
   s.walls = edges.has_walls();
   const detail::Periods periods(domain);
   const double reach = image_reach(options, s, hole_radii(options, s, disks.size()), periods);
-  const detail::DiskImages images(periods, disks, reach);
+  const detail::DiskImages images(periods, disks, reach, options.budget);
   sample_fractions(domain, images.all(), edges, w, options.samples, options.coverage_profile ? rmax : 0, s,
                    options.stop);
   measure_voids(domain, disks, images, reach, edges, options, s);

@@ -303,6 +303,7 @@ int run_fill(const FillArgs& a) {
                             .holes = quality && a.holes,
                             .coverage_profile = quality,
                             .cell_coverage = quality,
+                            .budget = limits,
                             .stop = options.stop});
   }
   const double seconds_stats = seconds_since(t_stats);

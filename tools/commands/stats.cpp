@@ -53,6 +53,7 @@ int run_stats(StatsArgs& a) {
   if (!a.cell_side.empty()) {
     options.cell_side = parse_positive("--cell-side", a.cell_side);
   }
+  options.budget = budget(a.in.domain);
   options.stop = stop_token();
   frontpack_tool::check_files(inputs, output_uses({}, a.json));
   const frontpack::Domain domain = load(a.in.domain);
