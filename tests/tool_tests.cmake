@@ -527,3 +527,10 @@ frontpack_tool_check(fill_jam 0
        -o ${TOOL_OUT}/fill_jam/j.csv --json ${TOOL_OUT}/fill_jam/j.json)
 frontpack_tool_test(fill_jam_fraction 5 "jam makes the packing as dense as it gets; a target fraction leaves gaps"
   fill ${S}/unit_square.wkt --jam --fraction 0.6)
+
+# Every input read is bounded (docs/robustness.md, "Input sizes"): /dev/zero as a domain, a region,
+# a size table and a disk file is refused at the bound, exit 2, naming the file.
+set(_zero_regex "cannot read '/dev/zero': it is longer than 1 [GM]iB")
+frontpack_tool_test(info_dev_zero 2 "${_zero_regex}" info /dev/zero)
+frontpack_tool_test(fill_region_dev_zero 2 "${_zero_regex}" fill ${S}/unit_square.wkt --types region:/dev/zero)
+frontpack_tool_test(check_dev_zero 2 "${_zero_regex}" check ${S}/unit_square.wkt /dev/zero --disks-format csv)

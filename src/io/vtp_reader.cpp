@@ -12,6 +12,7 @@
 
 #include "common/format.hpp"
 #include "common/numbers.hpp"
+#include "common/read_file.hpp"
 #include "common/text.hpp"
 #include "frontpack/io.hpp"
 #include "io/vtk_binary.hpp"
@@ -456,11 +457,7 @@ std::vector<Disk> VtpFile::read() {
 }  // namespace
 
 std::vector<Disk> read_vtp(std::istream& in, std::string_view source_name, std::string_view radius_array) {
-  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  if (in.bad()) {
-    const std::string source(source_name.empty() ? "<input>" : source_name);
-    throw IoError("cannot read '" + source + "'", source);
-  }
+  std::string text = detail::read_bounded(in, source_name);
   return VtpFile(std::move(text), source_name, radius_array).read();
 }
 
