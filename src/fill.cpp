@@ -101,7 +101,7 @@ Packing run_plain(const Domain& domain, const FillOptions& options,
   check_periodic(domain, options);
   const RadiusDistribution& radii = options.radii.distribution();
   const double clearance = clearance_for(domain, options);
-  const detail::RunBudget budget = detail::check_limits(domain, options, radii);
+  const detail::RunBudget budget = detail::check_limits(domain, options, radii, generation_cap);
   const std::size_t memory_bytes = budget.memory_bytes;
 
   Packing packing;

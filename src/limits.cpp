@@ -20,10 +20,15 @@ std::size_t count_of_bytes(double bytes) {
 
 }  // namespace
 
-RunBudget check_limits(const Domain& domain, const FillOptions& options, const RadiusDistribution& radii) {
+RunBudget check_limits(const Domain& domain, const FillOptions& options, const RadiusDistribution& radii,
+                       std::size_t generation_cap) {
   double estimate = 0;
   for (std::size_t p = 0; p < domain.num_polygons(); ++p) {
     estimate += estimate_disks(domain.bbox(p), radii);
+  }
+  if (options.count > 0) {
+    // A fill to a count: its generators stop at the cap (fill_count.cpp), whatever the domain holds.
+    estimate = std::min(estimate, static_cast<double>(generation_cap));
   }
   const Budget budget{options.max_disks, options.memory_limit};
   check_count(budget, estimate, static_cast<double>(peak_bytes_per_disk), "disks", "use larger radii");

@@ -19,8 +19,11 @@ struct RunBudget {
 
 /// The estimate of the disks a fill makes, and the memory it may take (options.memory_limit, or
 /// three quarters of the physical memory if 0). Throws LimitError if the estimate exceeds
-/// options.max_disks, or if its disks at peak_bytes_per_disk each exceed the memory limit.
-[[nodiscard]] RunBudget check_limits(const Domain& domain, const FillOptions& options, const RadiusDistribution& radii);
+/// options.max_disks, or if its disks at peak_bytes_per_disk each exceed the memory limit. A fill
+/// to a count (options.count > 0: the plain fill under fill_to_count) makes at most
+/// `generation_cap` disks, and is estimated so.
+[[nodiscard]] RunBudget check_limits(const Domain& domain, const FillOptions& options, const RadiusDistribution& radii,
+                                     std::size_t generation_cap);
 
 /// Progress of a fill across its polygons: the area of the disks generated over the area a dense
 /// packing covers (kEstimateFraction of it) where the method puts disks: the domain itself for

@@ -534,3 +534,17 @@ set(_zero_regex "cannot read '/dev/zero': it is longer than 1 [GM]iB")
 frontpack_tool_test(info_dev_zero 2 "${_zero_regex}" info /dev/zero)
 frontpack_tool_test(fill_region_dev_zero 2 "${_zero_regex}" fill ${S}/unit_square.wkt --types region:/dev/zero)
 frontpack_tool_test(check_dev_zero 2 "${_zero_regex}" check ${S}/unit_square.wkt /dev/zero --disks-format csv)
+
+# --count: one message for every value out of range; a count run is estimated by its count; a
+# count the domain cannot hold is said, not passed over.
+frontpack_tool_test(fill_count_zero 5 "--count '0': expected a whole number from 1 to 18446744073709551615 *$"
+  fill ${S}/unit_square.wkt --method open --count 0)
+frontpack_tool_test(fill_count_negative 5 "--count '-1': expected a whole number from 1 to 18446744073709551615 \\(digits only\\)"
+  fill ${S}/unit_square.wkt --method open --count -1)
+frontpack_tool_test(fill_count_one_max_disks_one 0 "disks: +1 \\(open form.*target: +count 1 asked"
+  fill ${S}/unit_square.wkt --method open --count 1 --max-disks 1)
+frontpack_tool_test(fill_count_closed_max_disks 0 "disks: +10 \\(closed form.*target: +count 10 asked"
+  fill ${S}/unit_square.wkt --method closed --count 10 --max-disks 10)
+frontpack_tool_check(fill_count_short 0 "target: +count 5000 asked, 237 placed: the domain holds no more"
+  JSON ${TOOL_OUT}/fill_count_short/c.json "target/count_requested=^5000$" "target/count_achieved=^237$"
+  ARGS fill ${S}/unit_square.wkt --method open --count 5000 --json ${TOOL_OUT}/fill_count_short/c.json)

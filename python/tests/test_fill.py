@@ -227,6 +227,9 @@ def test_targets_fraction_count_height():
     assert frontpack.certify(square, loose.disks)
     counted = frontpack.fill(square, "constant:0.02", method="closed", count=300)
     assert len(counted) == 300 and counted.target["count_requested"] == 300
+    assert counted.target["count_achieved"] == 300
+    short = frontpack.fill(square, "uniform:0.01,0.05", method="open", count=5000)
+    assert len(short) < 5000 and short.target["count_achieved"] == len(short)
     low = frontpack.fill(square, "uniform:0.01,0.03", seed=4, height=0.5)
     assert (low.disks[:, 1] + low.disks[:, 2] <= 0.5).all() and low.target["height"] == 0.5
     assert low.target["area_filled"] == 0.5

@@ -94,10 +94,7 @@ void apply_front_options(const FillArgs& a, frontpack::FillOptions& options) {
     options.fraction = parse_double("--fraction", a.fraction);
   }
   if (!a.count.empty()) {
-    options.count = parse_count("--count", a.count, std::numeric_limits<std::uint64_t>::max());
-    if (options.count == 0) {
-      throw frontpack::OptionError(given_value("--count", a.count) + ": expected a number of disks >= 1");
-    }
+    options.count = parse_count("--count", a.count, std::numeric_limits<std::uint64_t>::max(), 1);
   }
   if (!a.height.empty()) {
     options.height = parse_double("--height", a.height);
