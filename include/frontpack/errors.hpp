@@ -157,7 +157,7 @@ class DiskFileError : public Error {
     syntax,              ///< a line or XML element that is not what the format has there
     missing_item,        ///< a required header, section, column, element or array is absent
     count_mismatch,      ///< fewer or more entries than the file declares (atoms, points, values)
-    duplicate_id,        ///< a LAMMPS atom id given twice
+    duplicate_id,        ///< a LAMMPS atom id given twice, or a dump's timestep (two snapshots of one)
   };
   DiskFileError(Kind kind, std::string detail, std::string source, std::size_t line, std::size_t column = 0);
 
