@@ -548,3 +548,17 @@ frontpack_tool_test(fill_count_closed_max_disks 0 "disks: +10 \\(closed form.*ta
 frontpack_tool_check(fill_count_short 0 "target: +count 5000 asked, 237 placed: the domain holds no more"
   JSON ${TOOL_OUT}/fill_count_short/c.json "target/count_requested=^5000$" "target/count_achieved=^237$"
   ARGS fill ${S}/unit_square.wkt --method open --count 5000 --json ${TOOL_OUT}/fill_count_short/c.json)
+
+# Exit 8 names why no disk was placed (src/limits.cpp, NothingFitsError): the radii, a fraction that
+# keeps none, a start point outside the domain, the clearance, the precision at the coordinates.
+frontpack_tool_check(fill_nothing_fits_radii 8 "no disk fits: the smallest radius, 2 \\(constant: radius 2\\), is larger than any disk this domain holds \\(none of radius above 0\\.5\\); use smaller radii; nothing written"
+  NO_FILES ${TOOL_OUT}/fill_nothing_fits_radii/p.csv
+  ARGS fill ${S}/unit_square.wkt --radius constant:2 -o ${TOOL_OUT}/fill_nothing_fits_radii/p.csv)
+frontpack_tool_test(fill_nothing_fits_fraction 8 "fraction 1e-07 of the area 1 is 1e-07, less than one disk of the smallest radius, 0\\.01 \\(area 0\\.000314"
+  fill ${S}/unit_square.wkt --fraction 1e-7)
+frontpack_tool_test(fill_nothing_fits_start 8 "the start point \\(5 5\\) lies outside the domain's bounding box \\[0, 1\\] x \\[0, 1\\].*give a start point in the domain"
+  fill ${S}/unit_square.wkt --method closed --start 5,5)
+frontpack_tool_test(fill_nothing_fits_clearance 8 "the clearance 1 \\(clearance, --clearance\\).*leaves no room.*use a smaller clearance"
+  fill ${S}/unit_square.wkt --clearance 1)
+frontpack_tool_test(fill_nothing_fits_precision 8 "at the scale of this fill \\(largest \\|coordinate\\| \\+ 5 rmax = 1e\\+15\\) doubles are 0\\.125 apart.*move the domain near the origin"
+  fill --periodic 1e15,1e15,1.00000000000001e15,1.00000000000001e15)

@@ -163,6 +163,9 @@ int exit_code(const std::exception& e) {
   if (dynamic_cast<const frontpack::DiskFileError*>(&e) != nullptr) {
     return bad_disk_file;
   }
+  if (dynamic_cast<const frontpack::NothingFitsError*>(&e) != nullptr) {
+    return nothing_fits;
+  }
   if (dynamic_cast<const frontpack::OptionError*>(&e) != nullptr ||
       dynamic_cast<const frontpack::LimitError*>(&e) != nullptr) {
     return bad_option;

@@ -47,6 +47,16 @@ class LimitError : public Error {
   std::size_t estimate_;
 };
 
+/// A fill that placed no disk: fill() and Generator::run() never return an empty packing (unless
+/// cancelled); the message names why, e.g. "no disk fits: the smallest radius of constant:2 is 2,
+/// and no disk of radius above 0.5 fits in this domain; use smaller radii", or the fraction that
+/// keeps none, the start point outside the domain, the clearance, the precision at the domain's
+/// coordinates. The frontpack tool exits 8.
+class NothingFitsError : public Error {
+ public:
+  using Error::Error;
+};
+
 /// A file could not be opened, read or written.
 class IoError : public Error {
  public:

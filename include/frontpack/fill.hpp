@@ -198,7 +198,8 @@ struct Packing {
   std::optional<TargetReport> target{};
 };
 
-/// Fills the domain. Throws OptionError, LimitError, CancelledError (FillOptions::stop).
+/// Fills the domain. Throws OptionError, LimitError, NothingFitsError (no disk placed: never an
+/// empty packing, unless cancelled by the progress callback), CancelledError (FillOptions::stop).
 [[nodiscard]] Packing fill(const Domain& domain, const FillOptions& options);
 
 /// A fill with control: a progress callback (return false to cancel).

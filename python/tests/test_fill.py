@@ -281,3 +281,15 @@ def test_jam_is_denser_reports_its_phase_and_stops_when_asked():
     assert frontpack.certify(square, stopped.disks)
     with pytest.raises(frontpack.OptionError, match="jam"):
         frontpack.fill(square, radii, jam=True, fraction=0.6)
+
+
+@pytest.mark.parametrize("radius,kwargs,why", [
+    ("constant:3e307", {}, "no disk fits: the smallest radius, 3e+307"),
+    ("uniform:0.01,0.05", {"fraction": 1e-7}, "no disk was kept: fraction 1e-07"),
+    ("uniform:0.01,0.05", {"method": "closed", "start": (5, 5)}, "the start point (5 5) lies outside"),
+])
+def test_no_disk_placed_raises_nothing_fits_naming_why(radius, kwargs, why):
+    # The library says "no disk fits" to Python as the tool does with exit 8: never an empty packing.
+    with pytest.raises(frontpack.NothingFitsError) as e:
+        frontpack.fill("POLYGON((0 0,1 0,1 1,0 1,0 0))", radius, **kwargs)
+    assert why in str(e.value) and isinstance(e.value, frontpack.Error)
