@@ -562,3 +562,14 @@ frontpack_tool_test(fill_nothing_fits_clearance 8 "the clearance 1 \\(clearance,
   fill ${S}/unit_square.wkt --clearance 1)
 frontpack_tool_test(fill_nothing_fits_precision 8 "at the scale of this fill \\(largest \\|coordinate\\| \\+ 5 rmax = 1e\\+15\\) doubles are 0\\.125 apart.*move the domain near the origin"
   fill --periodic 1e15,1e15,1.00000000000001e15,1.00000000000001e15)
+
+# The one number rule for the tool's options: an empty value is refused like any other bad one
+# (--clearance "" was taken as not given). run_tool.cmake's argument list cannot carry an empty
+# argument, so these run the tool directly and match its message.
+foreach(_case IN ITEMS "fill_clearance_empty;--clearance;fill;${SQ}" "fill_fraction_empty;--fraction;fill;${SQ}"
+                       "stats_samples_empty;--samples;stats;${SQ};${TD}/good.csv")
+  list(POP_FRONT _case _name _option)
+  add_test(NAME tool.${_name} COMMAND $<TARGET_FILE:frontpack_tool> ${_case} ${_option} "")
+  set_tests_properties(tool.${_name} PROPERTIES PASS_REGULAR_EXPRESSION
+                       "^frontpack: ${_option} '': expected a value, got an empty one\n$")
+endforeach()

@@ -145,6 +145,19 @@ std::vector<frontpack_tool::FileUse> output_uses(const std::vector<frontpack_too
   return uses;
 }
 
+void refuse_empty_values(const CLI::App& command) {
+  for (const CLI::Option* option : command.get_options()) {
+    if (option->get_type_size() == 0) {
+      continue;  // a flag
+    }
+    for (const std::string& value : option->results()) {
+      if (value.empty()) {
+        throw frontpack::OptionError(given_value(option->get_name(), value) + ": expected a value, got an empty one");
+      }
+    }
+  }
+}
+
 int exit_code(const std::exception& e) {
   if (dynamic_cast<const frontpack_tool::UsageError*>(&e) != nullptr) {
     return usage;

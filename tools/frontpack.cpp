@@ -43,6 +43,7 @@ int main(int argc, char** argv) {
   try {
     for (const frontpack_tool::cli::Command& command : commands) {
       if (*command.app) {
+        frontpack_tool::cli::refuse_empty_values(*command.app);
         return command.run();
       }
     }
