@@ -24,31 +24,6 @@ namespace frontpack {
 
 namespace {
 
-// The clearance: a few ulps of the largest coordinate any disk centre can have (the domain's,
-// plus the margin by which generated disks overhang the filled box), so that neither the
-// floating-point tangency nor the rounding of the output (box corner + local position) can make
-// tangent disks overlap. docs/robustness.md, "Clearance".
-double clearance_for(const Domain& domain, const FillOptions& o) {
-  // (At most the largest double: radii beyond about 3.6e307 made it infinite.)
-  const double scale = std::min(domain.max_abs_coordinate() + 5 * o.radii.max(), std::numeric_limits<double>::max());
-  if (!(scale >= std::numeric_limits<double>::min())) {
-    // Every coordinate and radius subnormal: a clearance of a few ulps underflows to 0.
-    throw OptionError("the domain and the radii are too small: their size (largest |coordinate| + 5 rmax = " +
-                      detail::format_double(scale) +
-                      ") must be at least 2.2250738585072014e-308, the smallest normal double, for a clearance of a "
-                      "few ulps to separate tangent disks; scale the domain up (by a power of two, which is exact)");
-  }
-  const double minimum = 16 * 0x1p-52 * scale;
-  if (o.clearance == 0) {
-    return 4 * minimum;
-  }
-  if (!std::isfinite(o.clearance) || o.clearance < minimum) {
-    throw OptionError("clearance must be 0 (automatic) or a finite number >= " + detail::format_double(minimum) +
-                      " for this domain and radius range, got " + detail::format_double(o.clearance));
-  }
-  return o.clearance;
-}
-
 // A periodic cell: the boundary method and the closed form wrap around it (the open form, which
 // grows from the bottom of a box with walls, does not).
 void check_periodic(const Domain& domain, const FillOptions& o) {
@@ -100,8 +75,8 @@ Packing run_plain(const Domain& domain, const FillOptions& options,
   check_options(options);
   check_periodic(domain, options);
   const RadiusDistribution& radii = options.radii.distribution();
-  const double clearance = clearance_for(domain, options);
-  const detail::RunBudget budget = detail::check_limits(domain, options, radii);
+  const double clearance = detail::clearance_for(domain, options);
+  const detail::RunBudget budget = detail::check_limits(domain, options, radii, generation_cap);
   const std::size_t memory_bytes = budget.memory_bytes;
 
   Packing packing;
@@ -174,12 +149,16 @@ Packing run_plain(const Domain& domain, const FillOptions& options,
 // A fill to a fraction, count or level runs the plain fill (target/targets.hpp).
 Packing run_fill(const Domain& domain, const FillOptions& options,
                  const std::function<bool(const Progress&)>& progress) {
-  if (!detail::has_target(options)) {
-    return run_plain(domain, options, progress, options.max_disks);
+  Packing p = !detail::has_target(options)
+                  ? run_plain(domain, options, progress, options.max_disks)
+                  : detail::fill_with_targets(domain, options,
+                                              [&progress](const Domain& d, const FillOptions& o, std::size_t cap) {
+                                                return run_plain(d, o, progress, cap);
+                                              });
+  if (p.disks.empty() && !p.cancelled) {
+    detail::throw_nothing_fits(domain, options, p);
   }
-  return detail::fill_with_targets(
-      domain, options,
-      [&progress](const Domain& d, const FillOptions& o, std::size_t cap) { return run_plain(d, o, progress, cap); });
+  return p;
 }
 
 }  // namespace

@@ -1,11 +1,15 @@
 #include "limits.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <limits>
 #include <numbers>
+#include <string>
 
 #include "common/budget.hpp"
+#include "common/format.hpp"
 #include "common/packing_density.hpp"
 #include "generate/run_control.hpp"
 
@@ -20,10 +24,116 @@ std::size_t count_of_bytes(double bytes) {
 
 }  // namespace
 
-RunBudget check_limits(const Domain& domain, const FillOptions& options, const RadiusDistribution& radii) {
+// The clearance: a few ulps of the largest coordinate any disk centre can have (the domain's,
+// plus the margin by which generated disks overhang the filled box), so that neither the
+// floating-point tangency nor the rounding of the output (box corner + local position) can make
+// tangent disks overlap. docs/robustness.md, "Clearance".
+double clearance_for(const Domain& domain, const FillOptions& o) {
+  // (At most the largest double: radii beyond about 3.6e307 made it infinite.)
+  const double scale = std::min(domain.max_abs_coordinate() + 5 * o.radii.max(), std::numeric_limits<double>::max());
+  if (!(scale >= std::numeric_limits<double>::min())) {
+    // Every coordinate and radius subnormal: a clearance of a few ulps underflows to 0.
+    throw OptionError(
+        "the domain and the radii are too small: their size (largest |coordinate| + 5 rmax = " + format_double(scale) +
+        ") must be at least 2.2250738585072014e-308, the smallest normal double, for a clearance of a "
+        "few ulps to separate tangent disks; scale the domain up (by a power of two, which is exact)");
+  }
+  const double minimum = 16 * 0x1p-52 * scale;
+  if (o.clearance == 0) {
+    return 4 * minimum;
+  }
+  if (!std::isfinite(o.clearance) || o.clearance < minimum) {
+    throw OptionError("clearance must be 0 (automatic) or a finite number >= " + format_double(minimum) +
+                      " for this domain and radius range, got " + format_double(o.clearance));
+  }
+  return o.clearance;
+}
+
+// Why a fill placed no disk: the first of these causes that holds, tested in this order.
+// A disk of radius r inside the domain lies in one polygon's bounding box and has area pi r^2 at
+// most the domain's, so r <= min(sqrt(area / pi), the largest polygon box's half-side): a cheap
+// bound, exact for rectangles and corridors. A disk keeps the clearance from the walls and from
+// the other disks: with it, r + clearance <= that bound.
+void throw_nothing_fits(const Domain& domain, const FillOptions& options, const Packing& packing) {
+  const double rmin = options.radii.min();
+  const std::string r = format_double(rmin);
+  if (packing.target && packing.target->fraction_requested > 0) {
+    const double f = packing.target->fraction_requested;
+    const double area = packing.target->area_filled;
+    const double one = std::numbers::pi * rmin * rmin;
+    throw NothingFitsError("no disk was kept: fraction " + format_double(f) + " of the area " + format_double(area) +
+                           " is " + format_double(f * area) + ", less than one disk of the smallest radius, " + r +
+                           " (area " + format_double(one) + "); ask for a fraction of at least " +
+                           format_double(one / area) + " (fraction, --fraction) or use smaller radii");
+  }
+  if (packing.target && packing.target->height) {
+    throw NothingFitsError("no disk lies wholly below the level y = " + format_double(*packing.target->height) +
+                           ": the part of the domain below it (area " + format_double(packing.target->area_filled) +
+                           ") holds no disk of the smallest radius, " + r +
+                           "; raise the level (height, --height) or use smaller radii");
+  }
+  double half_side = 0;
+  for (std::size_t k = 0; k < domain.num_polygons(); ++k) {
+    const Box b = domain.bbox(k);
+    half_side = std::max(half_side, 0.5 * std::min(b.width(), b.height()));
+  }
+  const double bound = std::min(std::sqrt(domain.area() / std::numbers::pi), half_side);
+  if (rmin > bound) {
+    throw NothingFitsError("no disk fits: the smallest radius, " + r + " (" + options.radii.describe() +
+                           "), is larger than any disk this domain holds (none of radius above " +
+                           format_double(bound) + "); use smaller radii");
+  }
+  const std::string generated =
+      std::to_string(packing.certificate.generated) + (packing.certificate.generated == 1 ? " disk" : " disks");
+  const Box box = domain.bbox();
+  if (options.method == Method::closed && options.start &&
+      !(box.xmin <= options.start->x && options.start->x <= box.xmax && box.ymin <= options.start->y &&
+        options.start->y <= box.ymax)) {
+    throw NothingFitsError("no disk was placed: the start point " + format_point(*options.start) +
+                           " lies outside the domain's bounding box [" + format_double(box.xmin) + ", " +
+                           format_double(box.xmax) + "] x [" + format_double(box.ymin) + ", " +
+                           format_double(box.ymax) + "]; the closed form grew its " + generated +
+                           " from there and none lay inside the domain; give a start point in the domain (start, "
+                           "--start)");
+  }
+  const double clearance = clearance_for(domain, options);
+  if (rmin + clearance > bound) {
+    if (options.clearance != 0) {
+      throw NothingFitsError("no disk was placed: the clearance " + format_double(clearance) +
+                             " (clearance, --clearance), which every disk keeps from the walls and from the other "
+                             "disks, leaves no room: with it about a disk of the smallest radius, " +
+                             r + ", no disk fits in this domain (none of radius above " + format_double(bound) +
+                             " does); use a smaller clearance, or 0 (automatic)");
+    }
+    // The scale clearance_for() takes the ulps of.
+    const double scale =
+        std::min(domain.max_abs_coordinate() + 5 * options.radii.max(), std::numeric_limits<double>::max());
+    const double step = scale - std::nextafter(scale, 0.0);
+    char order[32];
+    std::snprintf(order, sizeof order, "%.3g", scale);
+    throw NothingFitsError(
+        std::string("no disk was placed: at the scale of this fill (largest |coordinate| + 5 rmax = ") + order +
+        ") doubles are " + format_double(step) +
+        " apart, and the clearance that keeps tangent disks apart exactly there, " + format_double(clearance) +
+        ", leaves no room for a disk of the smallest radius, " + r + ", in this domain (none of radius above " +
+        format_double(bound) +
+        " fits); move the domain near the origin (a periodic cell by whole periods) or narrow the "
+        "radius range");
+  }
+  throw NothingFitsError(std::string("no disk was placed: the ") + to_string(options.method) + " form generated " +
+                         generated + " and none lay inside the domain; use smaller radii" +
+                         (options.method == Method::boundary ? "" : " or the boundary method (--method boundary)"));
+}
+
+RunBudget check_limits(const Domain& domain, const FillOptions& options, const RadiusDistribution& radii,
+                       std::size_t generation_cap) {
   double estimate = 0;
   for (std::size_t p = 0; p < domain.num_polygons(); ++p) {
     estimate += estimate_disks(domain.bbox(p), radii);
+  }
+  if (options.count > 0) {
+    // A fill to a count: its generators stop at the cap (fill_count.cpp), whatever the domain holds.
+    estimate = std::min(estimate, static_cast<double>(generation_cap));
   }
   const Budget budget{options.max_disks, options.memory_limit};
   check_count(budget, estimate, static_cast<double>(peak_bytes_per_disk), "disks", "use larger radii");

@@ -248,6 +248,14 @@ TEST(DiskReaders, LammpsDumpErrors) {
                11, "atom id 1 given twice (also on line 10)");
   expect_error([&] { return dump_text(head); }, Kind::missing_item, 8, "the last snapshot has no 'ITEM: ATOMS'");
   expect_error([] { return dump_text("1 2 3\n"); }, Kind::syntax, 1, "expected an 'ITEM: ...' line");
+  // Two snapshots of one timestep (a run appended to its own dump after a restart): which one is
+  // meant is not the reader's guess, whichever timestep is asked for.
+  const std::string again = kDump.substr(kDump.find("ITEM: TIMESTEP\n10"));
+  for (const std::optional<std::int64_t> step :
+       {std::optional<std::int64_t>{}, std::optional<std::int64_t>{10}, std::optional<std::int64_t>{0}}) {
+    expect_error([&] { return dump_text(kDump + again, step); }, Kind::duplicate_id, 24,
+                 "timestep 10 given twice: the snapshots of lines 12 and 23");
+  }
 }
 
 TEST(DiskReaders, VtkBinaryAndAppendedLayouts) {

@@ -470,14 +470,14 @@ TEST(SizeTable, ReadsAndNamesTheBadLine) {
   EXPECT_EQ(msg("diameter,passing\n1,0\n2,0.5,3\n"),
             "s.csv:3: expected SIZE,FRACTION (2 comma-separated numbers), got '2,0.5,3'");
   EXPECT_EQ(msg("diameter,passing\n0.1,0\n0.2,40\n0.4,100\n"),
-            "s.csv:3: the fraction passing must be a number in [0, 1] (a fraction, not a percentage), got 40");
+            "s.csv:3: the fraction passing must be a number in [0, 1] (a fraction, not a percentage), got '40'");
   EXPECT_EQ(msg("diameter,passing\n0.1,0\n0.3,0.5\n0.2,1\n"),
             "s.csv:4: the diameter 0.2 must be larger than the previous one (0.3); give the points from the smallest "
             "size to the largest");
   EXPECT_EQ(msg("diameter,passing\n0.1,0\n0.2,0.5\n0.3,0.4\n"),
             "s.csv:4: the fraction passing 0.4 is less than the previous one (0.5); a grading curve never decreases");
-  EXPECT_EQ(msg("radius,fraction\n0,1\n"), "s.csv:2: the radius must be a finite number > 0, got 0");
-  EXPECT_EQ(msg("radius,fraction\ninf,1\n"), "s.csv:2: the radius must be a finite number > 0, got inf");
+  EXPECT_EQ(msg("radius,fraction\n0,1\n"), "s.csv:2: the radius must be a finite number > 0, got '0'");
+  EXPECT_EQ(msg("radius,fraction\ninf,1\n"), "s.csv:2: the radius must be a finite number > 0, got 'inf'");
   EXPECT_EQ(msg("radius,fraction\n"), "s.csv: no rows after the header");
   EXPECT_EQ(msg("\n# nothing\n"), "s.csv: empty; expected a header line such as 'diameter,passing' and rows");
 }

@@ -258,11 +258,20 @@ TEST(Fill, TerminatesOnHostileRadii) {
   const fp::Domain channel = fp::Domain::from_wkt("POLYGON((0 0,10 0,10 0.01,0 0.01,0 0))");
   for (const fp::Method m : {fp::Method::closed, fp::Method::open}) {
     SCOPED_TRACE(fp::to_string(m));
-    // rmax larger than the domain: empty or a few disks.
-    EXPECT_LE(fill(square, m, fp::Radii::uniform(2, 3), 1).disks.size(), 1U);
-    EXPECT_LE(fill(square, m, fp::Radii::uniform(0.3, 5), 1).disks.size(), 4U);
-    // A domain narrower than 2 rmin: an empty result, not an error.
-    EXPECT_EQ(fill(channel, m, fp::Radii::uniform(0.01, 0.02), 1).disks.size(), 0U);
+    // rmin larger than the domain: no disk fits, and the error says so; rmax larger: a few disks.
+    fp::test::expect_nothing_fits([&] { return fill(square, m, fp::Radii::uniform(2, 3), 1); },
+                                  "no disk fits: the smallest radius, 2 ");
+    // (None placed is NothingFitsError: the run ended and said why.)
+    std::size_t placed = 0;
+    try {
+      placed = fill(square, m, fp::Radii::uniform(0.3, 5), 1).disks.size();
+    } catch (const fp::NothingFitsError& e) {
+      EXPECT_NE(std::string(e.what()).find("none lay inside the domain"), std::string::npos) << e.what();
+    }
+    EXPECT_LE(placed, 4U);
+    // A domain narrower than 2 rmin: the same error, naming the widest disk it holds.
+    fp::test::expect_nothing_fits([&] { return fill(channel, m, fp::Radii::uniform(0.01, 0.02), 1); },
+                                  "none of radius above 0.005)");
     // rmax / rmin = 100.
     const fp::Packing wide = fill(square, m, fp::Radii::uniform(0.001, 0.1), 1);
     EXPECT_EQ(wide.certificate.dropped, 0U);

@@ -189,6 +189,29 @@ TEST(FillToCount, ClosedFormGrowsABlobFromTheStart) {
   EXPECT_LE(reach, std::sqrt(area / 0.7 / std::numbers::pi) + 2 * 0.02);
 }
 
+// A count the domain cannot hold is reported (TargetReport::count_achieved), and a count run is
+// estimated by its count, not by the domain: a count of 1 within max_disks = 1 runs.
+TEST(FillToCount, AShortfallIsReportedAndTheEstimateIsTheCount) {
+  const fp::Domain domain = fp::Domain::from_wkt("POLYGON((0 0,1 0,1 1,0 1,0 0))");
+  for (const fp::Method method : {fp::Method::open, fp::Method::closed}) {
+    fp::FillOptions o;
+    o.method = method;
+    o.radii = fp::parse_radii("uniform:0.01,0.05");
+    o.count = 5000;
+    const fp::Packing p = fp::fill(domain, o);
+    ASSERT_TRUE(p.target.has_value());
+    EXPECT_LT(p.disks.size(), 5000U) << fp::to_string(method);
+    EXPECT_EQ(p.target->count_requested, 5000U);
+    EXPECT_EQ(p.target->count_achieved, p.disks.size()) << fp::to_string(method);
+    o.count = 1;
+    o.max_disks = 1;
+    const fp::Packing one = fp::fill(domain, o);
+    EXPECT_EQ(one.disks.size(), 1U) << fp::to_string(method);
+    EXPECT_EQ(one.target->count_achieved, 1U);
+    expect_certified(domain, one.disks);
+  }
+}
+
 TEST(FillToCount, BoundaryMethodRefusesWithTheFormsThatTakeOne) {
   fp::FillOptions o;
   o.count = 100;

@@ -423,6 +423,42 @@ TEST(IoWriteFile, WriterErrorLeavesNoFile) {
   EXPECT_TRUE(dir.entries().empty());
 }
 
+// One validation for every writer: a disk with a non-finite coordinate, or a radius that is not a
+// finite number > 0, is refused before a byte is written, naming the disk's index and values, by
+// the stream writers and write_file alike (the disk readers would refuse such a file).
+TEST(IoWriteFile, EveryWriterRefusesADiskWithBadValues) {
+  const ScratchDir dir;
+  const fp::Domain domain = l_shape();
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const double inf = std::numeric_limits<double>::infinity();
+  const std::vector<std::pair<fp::Disk, std::string>> bad = {
+      {{{0.5, 0.5}, -0.1}, "disk 1 (centre (0.5 0.5), radius -0.1)"},
+      {{{0.5, 0.5}, 0.0}, "disk 1 (centre (0.5 0.5), radius 0)"},
+      {{{0.5, 0.5}, inf}, "disk 1 (centre (0.5 0.5), radius inf)"},
+      {{{0.5, 0.5}, nan}, "disk 1 (centre (0.5 0.5), radius nan)"},
+      {{{nan, 0.5}, 0.1}, "disk 1 (centre (nan 0.5), radius 0.1)"},
+      {{{0.5, -inf}, 0.1}, "disk 1 (centre (0.5 -inf), radius 0.1)"},
+  };
+  for (const auto& [disk, named] : bad) {
+    const std::vector<fp::Disk> disks = {{{0.25, 0.25}, 0.1}, disk};
+    for (const fp::Format f :
+         {fp::Format::csv, fp::Format::yade, fp::Format::lammps, fp::Format::vtp, fp::Format::svg}) {
+      std::ostringstream out;
+      try {
+        fp::write(out, f, domain, disks);
+        ADD_FAILURE() << fp::to_string(f) << " wrote " << named;
+      } catch (const fp::OptionError& e) {
+        EXPECT_NE(std::string(e.what()).find(named), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("a finite"), std::string::npos) << e.what();
+      }
+      EXPECT_EQ(out.str(), "") << fp::to_string(f);
+      EXPECT_THROW(fp::write_file(dir.path() / (std::string("p.") + fp::to_string(f)), f, domain, disks),
+                   fp::OptionError);
+      EXPECT_TRUE(dir.entries().empty()) << fp::to_string(f);
+    }
+  }
+}
+
 TEST(IoWriteFile, EveryFormatMatchesItsStreamWriter) {
   const ScratchDir dir;
   const fp::Domain domain = l_shape();

@@ -91,6 +91,18 @@ inline Packing fill(const Domain& d, Method m, Radii radii, std::uint64_t seed =
 }
 
 /// Total disk area over the domain's area.
+/// Expects `run` (a fill) to throw NothingFitsError whose message contains `part`: a fill that
+/// places no disk says why rather than returning an empty packing.
+template <class Run>
+void expect_nothing_fits(Run&& run, const std::string& part) {
+  try {
+    (void)run();
+    ADD_FAILURE() << "no NothingFitsError; expected '" << part << "'";
+  } catch (const NothingFitsError& e) {
+    EXPECT_NE(std::string(e.what()).find(part), std::string::npos) << e.what();
+  }
+}
+
 inline double fraction_of(const Domain& domain, const std::vector<Disk>& disks) {
   double a = 0;
   for (const Disk& d : disks) {

@@ -583,3 +583,49 @@ frontpack_tool_check(fill_jam 0
        -o ${TOOL_OUT}/fill_jam/j.csv --json ${TOOL_OUT}/fill_jam/j.json)
 frontpack_tool_test(fill_jam_fraction 5 "jam makes the packing as dense as it gets; a target fraction leaves gaps"
   fill ${S}/unit_square.wkt --jam --fraction 0.6)
+
+# Every input read is bounded (docs/robustness.md, "Input sizes"): /dev/zero as a domain, a region,
+# a size table and a disk file is refused at the bound, exit 2, naming the file.
+set(_zero_regex "cannot read '/dev/zero': it is longer than 1 [GM]iB")
+frontpack_tool_test(info_dev_zero 2 "${_zero_regex}" info /dev/zero)
+frontpack_tool_test(fill_region_dev_zero 2 "${_zero_regex}" fill ${S}/unit_square.wkt --types region:/dev/zero)
+frontpack_tool_test(check_dev_zero 2 "${_zero_regex}" check ${S}/unit_square.wkt /dev/zero --disks-format csv)
+
+# --count: one message for every value out of range; a count run is estimated by its count; a
+# count the domain cannot hold is said, not passed over.
+frontpack_tool_test(fill_count_zero 5 "--count '0': expected a whole number from 1 to 18446744073709551615 *$"
+  fill ${S}/unit_square.wkt --method open --count 0)
+frontpack_tool_test(fill_count_negative 5 "--count '-1': expected a whole number from 1 to 18446744073709551615 \\(digits only\\)"
+  fill ${S}/unit_square.wkt --method open --count -1)
+frontpack_tool_test(fill_count_one_max_disks_one 0 "disks: +1 \\(open form.*target: +count 1 asked"
+  fill ${S}/unit_square.wkt --method open --count 1 --max-disks 1)
+frontpack_tool_test(fill_count_closed_max_disks 0 "disks: +10 \\(closed form.*target: +count 10 asked"
+  fill ${S}/unit_square.wkt --method closed --count 10 --max-disks 10)
+frontpack_tool_check(fill_count_short 0 "target: +count 5000 asked, 237 placed: the domain holds no more"
+  JSON ${TOOL_OUT}/fill_count_short/c.json "target/count_requested=^5000$" "target/count_achieved=^237$"
+  ARGS fill ${S}/unit_square.wkt --method open --count 5000 --json ${TOOL_OUT}/fill_count_short/c.json)
+
+# Exit 8 names why no disk was placed (src/limits.cpp, NothingFitsError): the radii, a fraction that
+# keeps none, a start point outside the domain, the clearance, the precision at the coordinates.
+frontpack_tool_check(fill_nothing_fits_radii 8 "no disk fits: the smallest radius, 2 \\(constant: radius 2\\), is larger than any disk this domain holds \\(none of radius above 0\\.5\\); use smaller radii; nothing written"
+  NO_FILES ${TOOL_OUT}/fill_nothing_fits_radii/p.csv
+  ARGS fill ${S}/unit_square.wkt --radius constant:2 -o ${TOOL_OUT}/fill_nothing_fits_radii/p.csv)
+frontpack_tool_test(fill_nothing_fits_fraction 8 "fraction 1e-07 of the area 1 is 1e-07, less than one disk of the smallest radius, 0\\.01 \\(area 0\\.000314"
+  fill ${S}/unit_square.wkt --fraction 1e-7)
+frontpack_tool_test(fill_nothing_fits_start 8 "the start point \\(5 5\\) lies outside the domain's bounding box \\[0, 1\\] x \\[0, 1\\].*give a start point in the domain"
+  fill ${S}/unit_square.wkt --method closed --start 5,5)
+frontpack_tool_test(fill_nothing_fits_clearance 8 "the clearance 1 \\(clearance, --clearance\\).*leaves no room.*use a smaller clearance"
+  fill ${S}/unit_square.wkt --clearance 1)
+frontpack_tool_test(fill_nothing_fits_precision 8 "at the scale of this fill \\(largest \\|coordinate\\| \\+ 5 rmax = 1e\\+15\\) doubles are 0\\.125 apart.*move the domain near the origin"
+  fill --periodic 1e15,1e15,1.00000000000001e15,1.00000000000001e15)
+
+# The one number rule for the tool's options: an empty value is refused like any other bad one
+# (--clearance "" was taken as not given). run_tool.cmake's argument list cannot carry an empty
+# argument, so these run the tool directly and match its message.
+foreach(_case IN ITEMS "fill_clearance_empty;--clearance;fill;${SQ}" "fill_fraction_empty;--fraction;fill;${SQ}"
+                       "stats_samples_empty;--samples;stats;${SQ};${TD}/good.csv")
+  list(POP_FRONT _case _name _option)
+  add_test(NAME tool.${_name} COMMAND $<TARGET_FILE:frontpack_tool> ${_case} ${_option} "")
+  set_tests_properties(tool.${_name} PROPERTIES PASS_REGULAR_EXPRESSION
+                       "^frontpack: ${_option} '': expected a value, got an empty one\n$")
+endforeach()

@@ -147,6 +147,19 @@ std::vector<frontpack_tool::FileUse> output_uses(const std::vector<frontpack_too
   return uses;
 }
 
+void refuse_empty_values(const CLI::App& command) {
+  for (const CLI::Option* option : command.get_options()) {
+    if (option->get_type_size() == 0) {
+      continue;  // a flag
+    }
+    for (const std::string& value : option->results()) {
+      if (value.empty()) {
+        throw frontpack::OptionError(given_value(option->get_name(), value) + ": expected a value, got an empty one");
+      }
+    }
+  }
+}
+
 int exit_code(const std::exception& e) {
   if (dynamic_cast<const frontpack_tool::UsageError*>(&e) != nullptr) {
     return usage;
@@ -164,6 +177,9 @@ int exit_code(const std::exception& e) {
   }
   if (dynamic_cast<const frontpack::DiskFileError*>(&e) != nullptr) {
     return bad_disk_file;
+  }
+  if (dynamic_cast<const frontpack::NothingFitsError*>(&e) != nullptr) {
+    return nothing_fits;
   }
   if (dynamic_cast<const frontpack::OptionError*>(&e) != nullptr ||
       dynamic_cast<const frontpack::LimitError*>(&e) != nullptr) {

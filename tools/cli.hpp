@@ -104,6 +104,10 @@ void add_periodic_options(CLI::App& cmd, DomainSource& src);
 /// The file a `curve:FILE` radius spec reads, as an input that no output may overwrite.
 void add_curve_input(const std::string& spec, std::vector<FileUse>& inputs);
 
+/// Refuses (OptionError) an option or argument of `command` given an empty value: '--clearance ""'
+/// would otherwise read as an option not given. Flags take no value and are not checked.
+void refuse_empty_values(const CLI::App& command);
+
 /// One exit code per kind of error (see the top of tools/frontpack.cpp).
 [[nodiscard]] int exit_code(const std::exception& e);
 

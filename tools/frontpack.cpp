@@ -44,6 +44,7 @@ int main(int argc, char** argv) {
   try {
     for (const frontpack_tool::cli::Command& command : commands) {
       if (*command.app) {
+        frontpack_tool::cli::refuse_empty_values(*command.app);
         const int code = command.run();
         if (code != frontpack_tool::cli::ok) {
           frontpack_tool::remove_new_directories();

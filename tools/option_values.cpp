@@ -27,19 +27,22 @@ std::string given_value(std::string_view option, std::string_view text) {
   return std::string(option) + " " + quoted(text, 80);
 }
 
-std::uint64_t parse_count(std::string_view option, const std::string& text, std::uint64_t max) {
+std::uint64_t parse_count(std::string_view option, const std::string& text, std::uint64_t max, std::uint64_t min) {
   std::uint64_t value = 0;
   const char* first = text.data();
   const char* last = text.data() + text.size();
   const bool digits = !text.empty() && text.find_first_not_of("0123456789") == std::string::npos;
   const auto [end, ec] = digits ? std::from_chars(first, last, value) : std::from_chars_result{first, std::errc()};
-  const std::string range = "a whole number from 0 to " + std::to_string(max);
+  const std::string range = "a whole number from " + std::to_string(min) + " to " + std::to_string(max);
   if (!digits) {
     throw frontpack::OptionError(given_value(option, text) + ": expected " + range +
                                  (text.empty() ? "" : " (digits only)"));
   }
   if (ec == std::errc::result_out_of_range || end != last || value > max) {
     throw frontpack::OptionError(given_value(option, text) + ": too large; expected " + range);
+  }
+  if (value < min) {
+    throw frontpack::OptionError(given_value(option, text) + ": expected " + range);
   }
   return value;
 }

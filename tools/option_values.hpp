@@ -14,9 +14,11 @@ namespace frontpack_tool::cli {
 
 /// "OPTION 'TEXT'", TEXT cut to 80 characters: how an error message names an option's value.
 [[nodiscard]] std::string given_value(std::string_view option, std::string_view text);
-/// A whole number in [0, max]: digits only (no sign, no exponent, no fraction), so that "-1" or
-/// "1e23" is refused rather than wrapped or truncated.
-[[nodiscard]] std::uint64_t parse_count(std::string_view option, const std::string& text, std::uint64_t max);
+/// A whole number in [min, max]: digits only (no sign, no exponent, no fraction), so that "-1" or
+/// "1e23" is refused rather than wrapped or truncated; every value out of range gets the one
+/// message "expected a whole number from MIN to MAX".
+[[nodiscard]] std::uint64_t parse_count(std::string_view option, const std::string& text, std::uint64_t max,
+                                        std::uint64_t min = 0);
 /// Bytes: a whole number with an optional suffix K, M, G or T (powers of 1024: 512M, 2G).
 [[nodiscard]] std::size_t parse_bytes(std::string_view option, const std::string& text);
 /// text as a finite number, read exactly as std::from_chars reads it (no locale, correctly

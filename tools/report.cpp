@@ -202,6 +202,7 @@ Json target_json(const frontpack::TargetReport& t) {
   }
   if (t.count_requested > 0) {
     j["count_requested"] = t.count_requested;
+    j["count_achieved"] = t.count_achieved;
   }
   if (t.height) {
     j["height"] = *t.height;
@@ -217,8 +218,11 @@ std::string target_line(const frontpack::TargetReport& t) {
            fmt4(t.fraction_dense) + "; radii filled " + fmt4(t.scale) + "x then shrunk back, " +
            std::to_string(t.removed) + " disks thinned; " + std::to_string(t.fills) + " fills)";
   } else if (t.count_requested > 0) {
-    line = "count " + std::to_string(t.count_requested) + " asked; fraction " + fmt4(t.fraction_achieved) +
-           " of the domain";
+    line = "count " + std::to_string(t.count_requested) + " asked" +
+           (t.count_achieved < t.count_requested
+                ? ", " + std::to_string(t.count_achieved) + " placed: the domain holds no more at these radii"
+                : "") +
+           "; fraction " + fmt4(t.fraction_achieved) + " of the domain";
   } else {
     line = "fraction " + fmt4(t.fraction_achieved) + " of the area filled";
   }

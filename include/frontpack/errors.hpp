@@ -47,6 +47,16 @@ class LimitError : public Error {
   std::size_t estimate_;
 };
 
+/// A fill that placed no disk: fill() and Generator::run() never return an empty packing (unless
+/// cancelled); the message names why, e.g. "no disk fits: the smallest radius of constant:2 is 2,
+/// and no disk of radius above 0.5 fits in this domain; use smaller radii", or the fraction that
+/// keeps none, the start point outside the domain, the clearance, the precision at the domain's
+/// coordinates. The frontpack tool exits 8.
+class NothingFitsError : public Error {
+ public:
+  using Error::Error;
+};
+
 /// A file could not be opened, read or written.
 class IoError : public Error {
  public:
@@ -157,7 +167,7 @@ class DiskFileError : public Error {
     syntax,              ///< a line or XML element that is not what the format has there
     missing_item,        ///< a required header, section, column, element or array is absent
     count_mismatch,      ///< fewer or more entries than the file declares (atoms, points, values)
-    duplicate_id,        ///< a LAMMPS atom id given twice
+    duplicate_id,        ///< a LAMMPS atom id given twice, or a dump's timestep (two snapshots of one)
   };
   DiskFileError(Kind kind, std::string detail, std::string source, std::size_t line, std::size_t column = 0);
 

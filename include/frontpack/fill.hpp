@@ -126,13 +126,16 @@ struct FillOptions {
 
 /// What a fill to a target fraction, count or level achieved (Packing::target).
 struct TargetReport {
-  double fraction_requested = 0;  ///< FillOptions::fraction (0: none)
-  double fraction_achieved = 0;   ///< total disk area / area filled (the clipped area with a height)
-  double fraction_dense = 0;      ///< the method's dense fraction here, measured by the first fill
-  double scale = 1;               ///< s: the radii of the last fill were the drawn radii times s
-  std::size_t removed = 0;        ///< disks removed to reach the fraction
-  std::size_t fills = 0;          ///< fills run
-  std::size_t count_requested = 0;
+  double fraction_requested = 0;    ///< FillOptions::fraction (0: none)
+  double fraction_achieved = 0;     ///< total disk area / area filled (the clipped area with a height)
+  double fraction_dense = 0;        ///< the method's dense fraction here, measured by the first fill
+  double scale = 1;                 ///< s: the radii of the last fill were the drawn radii times s
+  std::size_t removed = 0;          ///< disks removed to reach the fraction
+  std::size_t fills = 0;            ///< fills run
+  std::size_t count_requested = 0;  ///< FillOptions::count (0: none)
+  /// With a count: the disks placed, below count_requested when the domain holds no more (the
+  /// method filled it whole) or max_disks stopped the generators (Packing::truncated).
+  std::size_t count_achieved = 0;
   std::optional<double> height{};    ///< FillOptions::height
   double area_filled = 0;            ///< Domain::area() of the part filled (the clipped domain)
   std::size_t outside_original = 0;  ///< disks culled against the unclipped domain (0 expected)
@@ -195,7 +198,8 @@ struct Packing {
   std::optional<TargetReport> target{};
 };
 
-/// Fills the domain. Throws OptionError, LimitError, CancelledError (FillOptions::stop).
+/// Fills the domain. Throws OptionError, LimitError, NothingFitsError (no disk placed: never an
+/// empty packing, unless cancelled by the progress callback), CancelledError (FillOptions::stop).
 [[nodiscard]] Packing fill(const Domain& domain, const FillOptions& options);
 
 /// A fill with control: a progress callback (return false to cancel).

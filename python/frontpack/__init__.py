@@ -27,6 +27,7 @@ from ._core import (  # noqa: F401  (the public names)
     IoError,
     LimitError,
     Location,
+    NothingFitsError,
     OptionError,
     Packing,
     Progress,
@@ -94,7 +95,7 @@ def fill(
     KeyboardInterrupt; an exception raised by the callback cancels it and is raised again.
     `stop`: a StopSource another thread may request (CancelledError).
 
-    Raises OptionError, LimitError, CancelledError.
+    Raises OptionError, LimitError, NothingFitsError (no disk placed: the message says why), CancelledError.
     """
     d = _shapes.as_domain(domain)
     callback, close = _progress.callback(progress)
@@ -133,7 +134,7 @@ assign_types = _core.assign_types
 
 __all__ = [
     "CancelledError", "Certificate", "CertifyReport", "DiskFileError", "Domain", "DomainFileError", "Error",
-    "FillStats", "InvalidDomainError", "IoError", "LimitError", "Location", "OptionError", "Packing", "Progress",
+    "FillStats", "InvalidDomainError", "IoError", "LimitError", "Location", "NothingFitsError", "OptionError", "Packing", "Progress",
     "Radii", "StopSource", "WktError", "as_domain", "assign_types", "certify", "default_radius_spec", "dumps",
     "fill", "has_dxf_reader", "has_gis_reader", "make_deck", "measure", "read_disks", "read_domain_file",
     "render", "wall_disks", "write",

@@ -25,6 +25,8 @@ class OptionError(Error, ValueError): ...
 class LimitError(Error):
     estimate: int
 
+class NothingFitsError(Error): ...
+
 class IoError(Error, OSError):
     path: str
 

@@ -29,6 +29,20 @@ Periodicity periodicity_from(const std::string& name) {
   throw OptionError("periodicity '" + name + "': expected 'x' or 'xy'");
 }
 
+// A periodic cell's bounds as the tool's --periodic takes them: (LX, LY), the cell [0, LX) x [0, LY),
+// or (xmin, ymin, xmax, ymax).
+Box cell_from(const py::handle& bounds) {
+  const auto v = bounds.cast<std::vector<double>>();
+  if (v.size() == 2) {
+    return Box{0, 0, v[0], v[1]};
+  }
+  if (v.size() != 4) {
+    throw py::value_error("a periodic cell is (LX, LY) or (xmin, ymin, xmax, ymax): 2 or 4 numbers, not " +
+                          std::to_string(v.size()));
+  }
+  return box_from(bounds);
+}
+
 // locate() of one point (shape (2,)) or of many ((N, 2)): a Location, or a uint8 array of them.
 py::object locate(const Domain& d, const py::handle& points) {
   using Doubles = py::array_t<double, py::array::c_style | py::array::forcecast>;
@@ -149,10 +163,11 @@ void bind_domain(py::module_& m) {
       .def_static(
           "periodic",
           [](const py::handle& bounds, const std::string& axes) {
-            return Domain::periodic(box_from(bounds), periodicity_from(axes));
+            return Domain::periodic(cell_from(bounds), periodicity_from(axes));
           },
           py::arg("bounds"), py::arg("axes") = "xy",
-          "A periodic cell [xmin, xmax) x [ymin, ymax) from bounds (xmin, ymin, xmax, ymax); axes 'xy' (a flat "
+          "A periodic cell [xmin, xmax) x [ymin, ymax) from bounds (xmin, ymin, xmax, ymax), or [0, LX) x [0, LY) "
+          "from (LX, LY) as the tool's --periodic; axes 'xy' (a flat "
           "torus) or 'x' (walls at the bottom and top). Periods are taken exactly. Raises InvalidDomainError for "
           "an empty, non-finite or too large box, OptionError for another axes value.")
       .def_property_readonly(

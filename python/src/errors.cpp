@@ -21,6 +21,7 @@ struct Classes {
   PyObject* cancelled = nullptr;
   PyObject* option = nullptr;
   PyObject* limit = nullptr;
+  PyObject* nothing_fits = nullptr;
   PyObject* io = nullptr;
   PyObject* wkt = nullptr;
   PyObject* invalid_domain = nullptr;
@@ -90,6 +91,8 @@ void translate(std::exception_ptr p) {
     raise(classes.io, e.what(), [&](py::object& x) { x.attr("path") = e.path(); });
   } catch (const LimitError& e) {
     raise(classes.limit, e.what(), [&](py::object& x) { x.attr("estimate") = e.estimate(); });
+  } catch (const NothingFitsError& e) {
+    raise(classes.nothing_fits, e.what(), [](py::object&) {});
   } catch (const OptionError& e) {
     raise(classes.option, e.what(), [](py::object&) {});
   } catch (const CancelledError& e) {
@@ -116,6 +119,10 @@ void bind_errors(py::module_& m) {
   classes.limit = make_class(m, "LimitError", error,
                              "A fill whose estimated disks exceed max_disks or memory_limit, refused up front, "
                              "or a run stopped at memory_limit. `estimate`: the estimated disk count.");
+  classes.nothing_fits = make_class(m, "NothingFitsError", error,
+                                    "A fill that placed no disk (fill never returns an empty packing); str() says "
+                                    "why: the radii, a fraction or level that keeps none, the start point, the "
+                                    "clearance, the precision at the domain's coordinates.");
   classes.io = make_class(m, "IoError", py::make_tuple(error, py::handle(PyExc_OSError)),
                           "A file could not be opened, read or written. `path`: the file; str() has the reason.");
   classes.wkt = make_class(m, "WktError", py::make_tuple(error, value),

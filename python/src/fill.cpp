@@ -49,6 +49,7 @@ py::object target_dict(const std::optional<TargetReport>& t) {
   d["removed"] = t->removed;
   d["fills"] = t->fills;
   d["count_requested"] = t->count_requested;
+  d["count_achieved"] = t->count_achieved;
   d["height"] = t->height ? py::object(py::float_(*t->height)) : py::object(py::none());
   d["area_filled"] = t->area_filled;
   d["outside_original"] = t->outside_original;
@@ -192,7 +193,8 @@ void bind_fill(py::module_& m) {
       .def_readonly("cancelled", &PyPacking::cancelled, "The progress callback returned False.")
       .def_readonly("target", &PyPacking::target,
                     "With fraction, count or height: what was achieved (TargetReport as a dict: fraction_requested, "
-                    "fraction_achieved, fraction_dense, scale, removed, fills, count_requested, height, area_filled, "
+                    "fraction_achieved, fraction_dense, scale, removed, fills, count_requested, count_achieved, "
+                    "height, area_filled, "
                     "outside_original); else None.")
       .def("__len__", [](const PyPacking& p) { return p.disks.shape(0); })
       .def("__repr__", [](const PyPacking& p) {

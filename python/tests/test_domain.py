@@ -104,6 +104,11 @@ def test_periodic_cell():
         frontpack.Domain.periodic((0, 0, 2, 1), "none")
     with pytest.raises(frontpack.InvalidDomainError):
         frontpack.Domain.periodic((0, 0, 0, 1))
+    # (LX, LY), as the tool's --periodic LX,LY: the cell [0, LX) x [0, LY).
+    assert frontpack.Domain.periodic([1, 1]).bbox == (0.0, 0.0, 1.0, 1.0)
+    assert frontpack.Domain.periodic((2, 1), "x").bbox == frontpack.Domain.periodic((0, 0, 2, 1), "x").bbox
+    with pytest.raises(ValueError, match=r"\(LX, LY\) or \(xmin, ymin, xmax, ymax\): 2 or 4 numbers, not 3"):
+        frontpack.Domain.periodic((1, 2, 3))
 
 
 def test_wkt_error_fields():

@@ -227,6 +227,9 @@ def test_targets_fraction_count_height():
     assert frontpack.certify(square, loose.disks)
     counted = frontpack.fill(square, "constant:0.02", method="closed", count=300)
     assert len(counted) == 300 and counted.target["count_requested"] == 300
+    assert counted.target["count_achieved"] == 300
+    short = frontpack.fill(square, "uniform:0.01,0.05", method="open", count=5000)
+    assert len(short) < 5000 and short.target["count_achieved"] == len(short)
     low = frontpack.fill(square, "uniform:0.01,0.03", seed=4, height=0.5)
     assert (low.disks[:, 1] + low.disks[:, 2] <= 0.5).all() and low.target["height"] == 0.5
     assert low.target["area_filled"] == 0.5
@@ -278,3 +281,15 @@ def test_jam_is_denser_reports_its_phase_and_stops_when_asked():
     assert frontpack.certify(square, stopped.disks)
     with pytest.raises(frontpack.OptionError, match="jam"):
         frontpack.fill(square, radii, jam=True, fraction=0.6)
+
+
+@pytest.mark.parametrize("radius,kwargs,why", [
+    ("constant:3e307", {}, "no disk fits: the smallest radius, 3e+307"),
+    ("uniform:0.01,0.05", {"fraction": 1e-7}, "no disk was kept: fraction 1e-07"),
+    ("uniform:0.01,0.05", {"method": "closed", "start": (5, 5)}, "the start point (5 5) lies outside"),
+])
+def test_no_disk_placed_raises_nothing_fits_naming_why(radius, kwargs, why):
+    # The library says "no disk fits" to Python as the tool does with exit 8: never an empty packing.
+    with pytest.raises(frontpack.NothingFitsError) as e:
+        frontpack.fill("POLYGON((0 0,1 0,1 1,0 1,0 0))", radius, **kwargs)
+    assert why in str(e.value) and isinstance(e.value, frontpack.Error)

@@ -86,6 +86,20 @@ def test_writer_errors(tmp_path, packing):
         frontpack.dumps(DOMAIN, packing.disks, "lammps", density=-1)
 
 
+@pytest.mark.parametrize("bad", [(0.5, 0.5, -0.1), (0.5, 0.5, 0.0), (0.5, 0.5, math.inf), (0.5, 0.5, math.nan),
+                                 (math.nan, 0.5, 0.1), (0.5, -math.inf, 0.1)])
+@pytest.mark.parametrize("extension", ["csv", "txt", "data", "vtp", "svg"])
+def test_every_writer_refuses_a_disk_with_bad_values(tmp_path, bad, extension):
+    disks = np.array([(0.25, 0.25, 0.1), bad])
+    path = tmp_path / ("p." + extension)
+    with pytest.raises(frontpack.OptionError, match=r"disk 1 \(centre .*\) is not a disk"):
+        frontpack.write(path, DOMAIN, disks)
+    assert not path.exists() and os.listdir(tmp_path) == []
+    with pytest.raises(frontpack.OptionError, match=r"disk 1 "):
+        frontpack.dumps(DOMAIN, disks, "yade" if extension == "txt" else
+                        "lammps" if extension == "data" else extension)
+
+
 def test_disk_file_error_fields(tmp_path):
     bad = tmp_path / "bad.csv"
     bad.write_text("x,y,r\n0.5,0.5,0.1\n0.5,abc,0.1\n")

@@ -2,6 +2,7 @@
 // blocks; the columns are found by their names on the "ITEM: ATOMS" line.
 #include <cstdint>
 #include <istream>
+#include <map>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -110,6 +111,10 @@ std::vector<Disk> read_lammps_dump(std::istream& in, std::string_view source_nam
   bool have_natoms = false;
   std::optional<std::vector<Disk>> chosen;
   std::vector<std::int64_t> steps;
+  // Each snapshot's timestep and the line of its 'ITEM: TIMESTEP': two of one timestep are refused,
+  // whichever is asked for (which of them is meant is not the reader's guess).
+  std::map<std::int64_t, std::size_t> step_lines;
+  std::size_t step_line = 0;
   bool any = false;
   while (lines.next()) {
     any = true;
@@ -122,12 +127,20 @@ std::vector<Disk> read_lammps_dump(std::istream& in, std::string_view source_nam
     }
     const std::string item(lines.text().substr(static_cast<std::size_t>(t[1].data() - lines.text().data())));
     if (item == "TIMESTEP") {
+      step_line = lines.number();
       value_line(lines, item);
       const std::vector<std::string_view> v = detail::tokens(lines.text());
       if (v.size() != 1) {
         lines.fail(Kind::field_count, "expected the timestep, one whole number");
       }
       step = lines.integer_at(v[0], "the timestep");
+      const auto [seen, first] = step_lines.emplace(step, step_line);
+      if (!first) {
+        lines.fail(Kind::duplicate_id,
+                   "timestep " + std::to_string(step) + " given twice: the snapshots of lines " +
+                       std::to_string(seen->second) + " and " + std::to_string(step_line) + " (keep one of them)",
+                   lines.column_of(v[0]));
+      }
       have_step = true;
       have_natoms = false;
     } else if (item == "NUMBER OF ATOMS") {

@@ -6,6 +6,7 @@
 #include <system_error>
 
 #include "common/numbers.hpp"
+#include "common/read_file.hpp"
 #include "common/text.hpp"
 
 namespace frontpack::detail {
@@ -16,7 +17,27 @@ LineReader::LineReader(std::istream& in, std::string_view source)
     : in_(in), source_(source.empty() ? "<input>" : source) {}
 
 bool LineReader::next() {
-  if (!std::getline(in_, line_)) {
+  // std::getline, bounded: a line past kMaxLineBytes (/dev/zero, a binary file) is refused before
+  // it is kept whole.
+  line_.clear();
+  std::streambuf* buffer = in_.rdbuf();
+  bool any = false;
+  for (;;) {
+    const int c = buffer->sbumpc();
+    if (c == std::char_traits<char>::eof()) {
+      in_.setstate(std::ios::eofbit);
+      break;
+    }
+    any = true;
+    if (c == '\n') {
+      break;
+    }
+    if (line_.size() == kMaxLineBytes) {
+      throw_too_long(source_, kMaxLineBytes, "of a line of a disk file (line " + std::to_string(number_ + 1) + ")");
+    }
+    line_.push_back(static_cast<char>(c));
+  }
+  if (!any) {
     if (in_.bad()) {
       throw IoError("cannot read '" + source_ + "'", source_);
     }

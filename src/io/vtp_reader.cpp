@@ -12,6 +12,7 @@
 
 #include "common/format.hpp"
 #include "common/numbers.hpp"
+#include "common/read_file.hpp"
 #include "common/text.hpp"
 #include "frontpack/io.hpp"
 #include "io/vtk_binary.hpp"
@@ -303,6 +304,10 @@ std::vector<double> VtpFile::ascii_values(const ArrayRef& a, VtkType type, std::
           (type != VtkType::float32 && type != VtkType::float64 && token.find_first_of(".eE") != std::string::npos)) {
         fail_array(Kind::bad_number, a, at, detail::quote_text(token) + " is not a number of type " + a.type);
       }
+      if (!std::isfinite(d.value)) {
+        // Named here, at its own line and text (a binary array's are caught per point below).
+        fail_array(Kind::non_finite, a, at, detail::quote_text(token) + " is not a finite number");
+      }
       // A Float32 array's text is what VTK prints for a float: read it as a float, as VTK does.
       out.push_back(type == VtkType::float32 ? static_cast<double>(static_cast<float>(d.value)) : d.value);
     }
@@ -456,11 +461,7 @@ std::vector<Disk> VtpFile::read() {
 }  // namespace
 
 std::vector<Disk> read_vtp(std::istream& in, std::string_view source_name, std::string_view radius_array) {
-  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  if (in.bad()) {
-    const std::string source(source_name.empty() ? "<input>" : source_name);
-    throw IoError("cannot read '" + source + "'", source);
-  }
+  std::string text = detail::read_bounded(in, source_name);
   return VtpFile(std::move(text), source_name, radius_array).read();
 }
 

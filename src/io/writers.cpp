@@ -39,6 +39,20 @@ void check_types(const char* format, std::span<const Disk> disks, std::span<cons
   }
 }
 
+// Every writer's disks: a centre of finite coordinates and a radius that is a finite number > 0,
+// checked before a byte is written. The disk readers refuse anything else, so a file written
+// without this check could not be read back (and a simulator would take it as it is).
+void check_disks(const char* format, std::span<const Disk> disks) {
+  for (std::size_t i = 0; i < disks.size(); ++i) {
+    const Disk& d = disks[i];
+    if (!(std::isfinite(d.centre.x) && std::isfinite(d.centre.y) && std::isfinite(d.radius) && d.radius > 0)) {
+      throw OptionError(std::string(format) + " writer: disk " + std::to_string(i) + " (centre " +
+                        detail::format_point(d.centre) + ", radius " + detail::format_double(d.radius) +
+                        ") is not a disk: a disk has a finite centre and a finite radius > 0");
+    }
+  }
+}
+
 constexpr const char* known_extensions = ".csv, .txt or .yade (Yade), .data or .lmp (LAMMPS), .vtp, .svg";
 
 }  // namespace
@@ -95,6 +109,7 @@ Format format_from_name(std::string_view name) {
 
 void write_svg(std::ostream& out, const Domain& domain, std::span<const Disk> disks, const SvgStyle& style,
                std::stop_token stop) {
+  check_disks("SVG", disks);
   const Box b = domain.bbox();
   const double margin = 0.02 * std::max(b.width(), b.height());
   const double scale = style.width_px / (b.width() + 2 * margin);
@@ -141,6 +156,7 @@ void write_svg(std::ostream& out, const Domain& domain, std::span<const Disk> di
 
 void write_csv(std::ostream& out, std::span<const Disk> disks, std::span<const std::uint32_t> types,
                std::stop_token stop) {
+  check_disks("CSV", disks);
   check_types("CSV", disks, types);
   out << (types.empty() ? "x,y,r\n" : "x,y,r,type\n");
   for (std::size_t i = 0; i < disks.size(); ++i) {
@@ -161,6 +177,7 @@ void write_yade(std::ostream& out, std::span<const Disk> disks, std::span<const 
   // lines starting with '#', and fails on a blank line: so no blank line, not even at the end.
   // SpherePack.load takes lines of 4 (x y z r) or 5 (x y z r clumpId) columns and refuses any
   // other line, '#' lines included: so no header unless the matId column needs one.
+  check_disks("Yade", disks);
   check_types("Yade", disks, types);
   if (!types.empty()) {
     out << "#format x_y_z_r_matId\n";
@@ -181,6 +198,7 @@ void write_yade(std::ostream& out, std::span<const Disk> disks, std::span<const 
 
 void write_lammps(std::ostream& out, std::span<const Disk> disks, std::span<const std::uint32_t> types, const Box& box,
                   const LammpsOptions& options, std::stop_token stop) {
+  check_disks("LAMMPS", disks);
   check_types("LAMMPS", disks, types);
   if (!(std::isfinite(options.density) && options.density > 0)) {
     throw OptionError("LAMMPS density " + detail::format_double(options.density) + " must be a finite number > 0");
@@ -267,6 +285,7 @@ namespace {
 // The VTP writer; a periodic `domain` adds the cell as field data.
 void write_vtp_file(std::ostream& out, const Domain* domain, std::span<const Disk> disks,
                     std::span<const std::uint32_t> types, const std::stop_token& stop) {
+  check_disks("VTP", disks);
   check_types("VTP", disks, types);
   // File format version 1.0: "offsets" holds each cell's end (version 2.0 would add a leading 0).
   const std::string n = std::to_string(disks.size());

@@ -40,6 +40,9 @@ detail::Decimal to_double(std::string_view text) {
   text = trim(text);
   if (!text.empty() && text.front() == '+') {
     text.remove_prefix(1);
+    if (!text.empty() && (text.front() == '-' || text.front() == '+')) {
+      return {};  // "+-1": one sign at most (malformed)
+    }
   }
   return detail::parse_decimal(text);
 }
@@ -319,11 +322,12 @@ SizeTable parse_size_table(std::string_view text, std::string_view source) {
     const char* size_name = to_string(table.kind);
     const char* fraction_name = table.cumulative ? "fraction passing" : "fraction";
     if (!std::isfinite(row.size) || !(row.size > 0)) {
-      fail(line_no, std::string("the ") + size_name + " must be a finite number > 0, got " + format_double(row.size));
+      fail(line_no,
+           std::string("the ") + size_name + " must be a finite number > 0, got " + in_quotes(trim(fields[0])));
     }
     if (!std::isfinite(row.fraction) || row.fraction < 0 || row.fraction > 1) {
       fail(line_no, std::string("the ") + fraction_name + " must be a number in [0, 1] (a fraction, not a " +
-                        "percentage), got " + format_double(row.fraction));
+                        "percentage), got " + in_quotes(trim(fields[1])));
     }
     if (table.cumulative && !table.rows.empty()) {
       const SizeFraction& prev = table.rows.back();

@@ -16,8 +16,8 @@ namespace frontpack::detail {
 
 Packing fill_to_count(const Domain& domain, const FillOptions& options, const PlainFill& plain) {
   const std::size_t n = options.count;
-  FillOptions o = options;
-  o.count = 0;
+  // The plain fill keeps options.count: its estimate is the cap (limits.hpp), not the domain's.
+  const FillOptions& o = options;
   TargetReport t;
   t.count_requested = n;
   t.area_filled = domain.area();
@@ -54,6 +54,7 @@ Packing fill_to_count(const Domain& domain, const FillOptions& options, const Pl
   if (p.disks.size() > n) {
     p.disks.resize(n);
   }
+  t.count_achieved = p.disks.size();
   t.fraction_achieved = disk_area(p.disks) / t.area_filled;
   p.target = t;
   return p;

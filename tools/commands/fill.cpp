@@ -8,7 +8,6 @@
 #include <iostream>
 #include <limits>
 #include <memory>
-#include <numbers>
 #include <optional>
 #include <sstream>
 #include <string>
@@ -94,10 +93,7 @@ void apply_front_options(const FillArgs& a, frontpack::FillOptions& options) {
     options.fraction = parse_double("--fraction", a.fraction);
   }
   if (!a.count.empty()) {
-    options.count = parse_count("--count", a.count, std::numeric_limits<std::uint64_t>::max());
-    if (options.count == 0) {
-      throw frontpack::OptionError(given_value("--count", a.count) + ": expected a number of disks >= 1");
-    }
+    options.count = parse_count("--count", a.count, std::numeric_limits<std::uint64_t>::max(), 1);
   }
   if (!a.height.empty()) {
     options.height = parse_double("--height", a.height);
@@ -197,28 +193,6 @@ Json fill_json(const FillArgs& a, const std::string& spec, const frontpack::Fill
   return j;
 }
 
-// Why a fill placed no disk. A disk of radius r inside the domain lies in one polygon's bounding
-// box and has area pi r^2 at most the domain's: r <= min(sqrt(area / pi), the largest polygon box's
-// half-side), a cheap bound that is exact for rectangles and corridors.
-std::string why_no_disk(const frontpack::Domain& domain, const frontpack::FillOptions& options, const std::string& spec,
-                        std::size_t generated) {
-  double half_side = 0;
-  for (std::size_t k = 0; k < domain.num_polygons(); ++k) {
-    const frontpack::Box b = domain.bbox(k);
-    half_side = std::max(half_side, 0.5 * std::min(b.width(), b.height()));
-  }
-  const double bound = std::min(std::sqrt(domain.area() / std::numbers::pi), half_side);
-  const double rmin = options.radii.min();
-  if (rmin > bound) {
-    return "no disk fits: the smallest radius of " + spec + " is " + fmt(rmin) + ", and no disk of radius above " +
-           fmt(bound) + " fits in this domain; use smaller radii";
-  }
-  return std::string("no disk was placed: the ") + frontpack::to_string(options.method) + " form generated " +
-         std::to_string(generated) + (generated == 1 ? " disk" : " disks") +
-         " and none lay inside the domain; use smaller radii" +
-         (options.method == frontpack::Method::boundary ? "" : " or --method boundary");
-}
-
 // Sample points of the interior and band fractions: 1M in the JSON summary (as `frontpack
 // stats`: +/- 0.0005), a quarter of that in the text summary (+/- 0.001, printed with it), which at
 // a million disks then costs a tenth of the fill or a little more (docs/performance.md, "The summary").
@@ -277,12 +251,13 @@ int run_fill(const FillArgs& a) {
       line.update(progress);
       return true;
     });
-    p = generator.run();
-  }
-  if (p.disks.empty()) {
-    line.clear();
-    std::cerr << "frontpack: " << why_no_disk(domain, options, spec, p.certificate.generated) << "; nothing written\n";
-    return nothing_fits;
+    try {
+      p = generator.run();
+    } catch (const frontpack::NothingFitsError& e) {
+      line.clear();
+      std::cerr << "frontpack: " << e.what() << "; nothing written\n";
+      return nothing_fits;
+    }
   }
 
   // Statistics only where they are shown or written: the text summary shows the fractions and
