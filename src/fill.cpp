@@ -26,7 +26,7 @@ namespace {
 
 // A periodic cell: the boundary method and the closed form wrap around it (the open form, which
 // grows from the bottom of a box with walls, does not).
-void check_periodic(const Domain& domain, const FillOptions& o) {
+void check_periodic(const Domain& domain, const FillOptions& o, double clearance) {
   if (domain.periodicity() == Periodicity::none) {
     return;
   }
@@ -35,16 +35,30 @@ void check_periodic(const Domain& domain, const FillOptions& o) {
         "a periodic cell is filled by the boundary method or the closed form; the open form does not wrap around a "
         "cell");
   }
-  // Each front segment and each disk's reach are a few rmax: at 10 rmax their images are far
-  // enough apart that the nearest image is the one meant (generate/periodic_wrap.hpp).
+  // Each front segment and each disk's reach are a few times the larger of rmax and the clearance
+  // (tangent disks are placed the clearance apart): at 10 times it their images are far enough
+  // apart that the nearest image is the one meant (generate/periodic_wrap.hpp). The clearance is a
+  // few ulps of the coordinates, so it is the larger only for a cell far from the origin against
+  // its size (at 1.4e10 it is 2e-4: a cell a few ulps across had a tangent disk placed many periods
+  // away, and the nearest image made it overlap its neighbours).
   const Box cell = domain.bbox();
-  const double least = 10 * o.radii.max();
+  const bool precision = clearance > o.radii.max();
+  const double least = 10 * std::max(o.radii.max(), clearance);
   const bool narrow =
       cell.xmax - cell.xmin < least || (domain.periodicity() == Periodicity::xy && cell.ymax - cell.ymin < least);
   if (narrow) {
-    throw OptionError("a periodic cell must be at least 10 rmax = " + detail::format_double(least) +
-                      " across each periodic direction; it is " + detail::format_double(cell.xmax - cell.xmin) + " x " +
-                      detail::format_double(cell.ymax - cell.ymin));
+    const std::string size =
+        detail::format_double(cell.xmax - cell.xmin) + " x " + detail::format_double(cell.ymax - cell.ymin);
+    if (!precision) {
+      throw OptionError("a periodic cell must be at least 10 rmax = " + detail::format_double(least) +
+                        " across each periodic direction; it is " + size);
+    }
+    throw OptionError(
+        "a periodic cell must be at least 10 times the clearance that keeps tangent disks apart "
+        "exactly at its coordinates (largest |coordinate| " +
+        detail::format_double(domain.max_abs_coordinate()) + ": clearance " + detail::format_double(clearance) +
+        ", larger than rmax), " + detail::format_double(least) + ", across each periodic direction; it is " + size +
+        ": move the cell near the origin, by whole periods");
   }
   if (o.start &&
       (o.start->x < cell.xmin || o.start->x >= cell.xmax || o.start->y < cell.ymin || o.start->y >= cell.ymax)) {
@@ -73,9 +87,9 @@ double seconds_since(std::chrono::steady_clock::time_point t0) {
 Packing run_plain(const Domain& domain, const FillOptions& options,
                   const std::function<bool(const Progress&)>& progress, std::size_t generation_cap) {
   check_options(options);
-  check_periodic(domain, options);
-  const RadiusDistribution& radii = options.radii.distribution();
   const double clearance = detail::clearance_for(domain, options);
+  check_periodic(domain, options, clearance);
+  const RadiusDistribution& radii = options.radii.distribution();
   const detail::RunBudget budget = detail::check_limits(domain, options, radii, generation_cap);
   const std::size_t memory_bytes = budget.memory_bytes;
 

@@ -266,12 +266,8 @@ frontpack_tool_check(stats_hole_probes_budget 5
 frontpack_tool_check(stats_hole_probes_memory 5
   "would make about [0-9.e+]+ hole probes, needing about [0-9.e+]+ bytes of memory, more than the limit of 1048576 bytes"
   ARGS stats ${SQ} ${TD}/good.csv --hole-radius 1e-4 --memory-limit 1M)
-# stats: the sample points, the coverage cells and a periodic cell's images are estimated before
-# they are made and held to the same budget (--samples 1e8 once ran on, a cell side of 1e-5 left
-# the coverage out without a word).
-frontpack_tool_check(stats_samples_budget 5
-  "about 100000000 sample points, more than max_disks = 50000000; use fewer sample points \\(--samples\\)"
-  ARGS stats ${SQ} ${TD}/good.csv --samples 100000000)
+# stats: the coverage cells and a periodic cell's images are estimated before they are made and
+# held to the same budget (a cell side of 1e-5 left the coverage out without a word).
 frontpack_tool_check(stats_coverage_cells_budget 5
   "about 10000000000 coverage cells, more than max_disks = 50000000; use a larger cell side \\(--cell-side\\)"
   ARGS stats ${SQ} ${TD}/good.csv --cell-side 1e-5)
@@ -617,6 +613,12 @@ frontpack_tool_test(fill_nothing_fits_start 8 "the start point \\(5 5\\) lies ou
 frontpack_tool_test(fill_nothing_fits_clearance 8 "the clearance 1 \\(clearance, --clearance\\).*leaves no room.*use a smaller clearance"
   fill ${S}/unit_square.wkt --clearance 1)
 frontpack_tool_test(fill_nothing_fits_precision 8 "at the scale of this fill \\(largest \\|coordinate\\| \\+ 5 rmax = 1e\\+15\\) doubles are 0\\.125 apart.*move the domain near the origin"
+  fill --wkt "POLYGON((1e15 1e15,1.00000000000001e15 1e15,1.00000000000001e15 1.00000000000001e15,1e15 1.00000000000001e15,1e15 1e15))")
+# A periodic cell far from the origin against its size is refused up front: the clearance there
+# exceeds rmax, and a cell under 10 clearances across lets a tangent disk's nearest image be
+# another (a cell a few ulps wide at 1.4e10 had overlapping disks placed; fuzz regression
+# periodic-cell-few-ulps-wide-at-1.4e10-overlap).
+frontpack_tool_test(fill_periodic_precision 5 "a periodic cell must be at least 10 times the clearance .*\\(largest \\|coordinate\\| 1000000000000010: clearance 14\\.2[0-9]+, larger than rmax\\), 142\\.1[0-9]+, across each periodic direction; it is 10 x 10: move the cell near the origin"
   fill --periodic 1e15,1e15,1.00000000000001e15,1.00000000000001e15)
 
 # The one number rule for the tool's options: an empty value is refused like any other bad one

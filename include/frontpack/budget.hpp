@@ -1,5 +1,5 @@
 // What a call may make. Every count frontpack derives from its input before making it (free
-// disks, wall disks, arc segments, hole probes, sample points, periodic images) is estimated first
+// disks, wall disks, arc segments, hole probes, coverage cells, periodic images) is estimated first
 // and held to one Budget: refused up front with the estimate in a LimitError, never discovered as
 // an allocation failure or a run that does not end. docs/robustness.md, "Derived counts", lists
 // each count, its estimate and its bytes per item.

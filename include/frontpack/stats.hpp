@@ -81,7 +81,7 @@
 // edges whatever the disks' size against the edges' length (the distance to the walls is a
 // search of a hierarchy of the edges, domain/edge_distance.hpp): about 0.5 s per million samples
 // plus 0.1 s per 50,000 disks (one core of an AMD EPYC). What measuring makes is counted before it
-// is made and held to `budget` (LimitError): the sample points, the hole probes (which grow as the
+// is made and held to `budget` (LimitError): the hole probes (which grow as the
 // disks' perimeter over the hole radius: a radius far below the disks' is refused), the coverage
 // cells and a periodic cell's images (docs/robustness.md, "Derived counts in the statistics"). On a 958,549-disk packing of the unit
 // square (uniform radii 0.0004-0.0006, docs/distributions.md has the command) the largest empty
@@ -133,7 +133,7 @@ struct StatsOptions {
   /// radii cell for cell.
   bool cell_coverage = true;
   double cell_side = 0;
-  /// What measuring may make: sample points, hole probes, cells, periodic images, each counted
+  /// What measuring may make: hole probes, cells, periodic images, each counted
   /// before it is made.
   Budget budget{};
   /// Once a stop is requested, measure() throws CancelledError.

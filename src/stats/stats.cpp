@@ -251,9 +251,9 @@ PackingStats measure(const Domain& domain, std::span<const Disk> disks, const St
           : std::max(1e-9 * rmax, 0x1p-42 * std::min(domain.max_abs_coordinate() + 5 * rmax,
                                                      std::numeric_limits<double>::max()));  // (finite for any radius)
   const double w = s.band_width;
-  // The sample points are made a row at a time (memory of a row), but each costs a point location.
-  detail::check_count(options.budget, static_cast<double>(options.samples), 0, "sample points",
-                      "use fewer sample points (--samples)");
+  // The sample points are the caller's own number (StatsOptions::samples), made a row at a time:
+  // no memory grows with them, and holding them to max_count would let a small max_count for the
+  // disks (fill --max-disks) refuse the statistics of the packing it allowed.
   // The walls (a periodic cell's real walls alone) and the disks with their images across the
   // periodic sides: what every measure below sees of the domain.
   const EdgeDistanceIndex edges(domain);
