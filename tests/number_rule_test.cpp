@@ -1,8 +1,8 @@
 // One number rule for every reader (README "Numbers", src/common/numbers.hpp): a value that is not
 // a finite number in the range of a double is refused, with an error naming the file, the line and
-// the text written. One table of bad values, fed to every reader at a known line. Not here yet: the
-// DXF reader (its rows come with its own fixes) and GeoJSON (GDAL parses the JSON and reports
-// neither the line nor the text; it reads 1e-400 as 0 and '1.5.5' as a number).
+// the text written. One table of bad values, fed to every reader at a known line; DXF when the
+// build reads it. Not here: GeoJSON (GDAL parses the JSON and reports neither the line nor the
+// text; it reads 1e-400 as 0 and '1.5.5' as a number).
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -74,6 +74,15 @@ std::vector<Reader> readers() {
       {"curve", "curve.csv", [](const std::string& v) { return "diameter,passing\n0.1,0\n0.2," + v + "\n"; }, 3,
        [](const fs::path& p) { (void)fp::parse_radii("curve:" + p.string()); }},
   };
+  if (fp::has_dxf_reader()) {
+    // A CIRCLE's centre x at line 10 (a DXF group is a code line, then a value line).
+    r.push_back({"DXF", "d.dxf",
+                 [](const std::string& v) {
+                   return "0\nSECTION\n2\nENTITIES\n0\nCIRCLE\n8\n0\n10\n" + v +
+                          "\n20\n0.5\n40\n0.25\n0\nENDSEC\n0\nEOF\n";
+                 },
+                 10, [](const fs::path& p) { (void)fp::read_domain_file(p); }});
+  }
   return r;
 }
 
