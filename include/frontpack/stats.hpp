@@ -83,8 +83,8 @@
 // plus 0.1 s per 50,000 disks (one core of an AMD EPYC). What measuring makes is counted before it
 // is made and held to `budget` (LimitError): the hole probes (which grow as the
 // disks' perimeter over the hole radius: a radius far below the disks' is refused), the coverage
-// cells and a periodic cell's images (docs/robustness.md, "Derived counts in the statistics"). On a 958,549-disk packing of the unit
-// square (uniform radii 0.0004-0.0006, docs/distributions.md has the command) the largest empty
+// cells and a periodic cell's images (docs/robustness.md, "Derived counts in the statistics"). On a 958,549-disk
+// packing of the unit square (uniform radii 0.0004-0.0006, docs/distributions.md has the command) the largest empty
 // circle adds 0.4-0.5 s, the coverage profile and the cell coverage together under 0.1 s, and
 // each hole radius 1-2 s (that packing has thousands of holes; a radius above the largest empty
 // circle costs nothing).

@@ -480,7 +480,7 @@ Knobs read_knobs(Bytes& in) {
   k.budget.max_count = std::size_t{1} << in.in_range(16);                     // 1 .. 32,768
   const int memory = in.in_range(16);                                         // 0: three quarters of the machine's
   k.budget.memory_limit = memory == 0 ? 0 : std::size_t{1} << (12 + memory);  // 8 KB .. 128 MB
-  const double mantissa = in.unit();  // read in this order with every compiler
+  const double mantissa = in.unit();                                          // read in this order with every compiler
   k.wall_scale = std::ldexp(1.0 + mantissa, 7 - in.in_range(128));
   return k;
 }
