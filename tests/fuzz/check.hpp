@@ -2,9 +2,12 @@
 // libFuzzer (and the sanitizers) report as a crash with the input that caused it.
 #pragma once
 
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <string>
+
+#include "frontpack/domain.hpp"
 
 namespace frontpack::fuzz {
 
@@ -26,6 +29,17 @@ inline void check_message(const std::string& message) {
   }
   check(printable, "an error message carries no control character (the user's text is escaped)");
   check(message.size() <= 512, "an error message quotes at most 40 characters of the user's text");
+}
+
+/// What a domain any reader accepted must be: of positive finite area, in a finite box that is
+/// not degenerate.
+inline void check_accepted_domain(const Domain& domain) {
+  const double area = domain.area();
+  check(std::isfinite(area) && area > 0, "an accepted domain has a positive finite area");
+  const Box b = domain.bbox();
+  check(std::isfinite(b.xmin) && std::isfinite(b.xmax) && std::isfinite(b.ymin) && std::isfinite(b.ymax) &&
+            b.xmin < b.xmax && b.ymin < b.ymax,
+        "an accepted domain has a finite, non-degenerate box");
 }
 
 }  // namespace frontpack::fuzz

@@ -93,12 +93,7 @@ void dxf(const std::uint8_t* data, std::size_t size) {
     return;  // a clear, typed error: what bad input must get
   }
   const Domain& domain = parsed->domain;
-  const double area = domain.area();
-  check(std::isfinite(area) && area > 0, "an accepted domain has a positive finite area");
-  const Box b = domain.bbox();
-  check(std::isfinite(b.xmin) && std::isfinite(b.xmax) && std::isfinite(b.ymin) && std::isfinite(b.ymax) &&
-            b.xmin < b.xmax && b.ymin < b.ymax,
-        "an accepted domain has a finite, non-degenerate box");
+  check_accepted_domain(domain);
   for (const CurveReport& c : parsed->curves) {
     check(std::isfinite(c.radius) && c.radius > 0 && c.segments > 0, "every curve has a finite circle and segments");
   }
