@@ -1,7 +1,7 @@
 // Statistics benchmarks: measure() as the domain's edges grow and as the disks grow large against
-// the edges' length, and the issue-46 cases (a circle of 30,000 and 300,000 vertices filled at
-// uniform:0.1,0.5: 55 s and past 60 s of statistics when the distance to the walls scanned every
-// edge of a grid cell of side 2 rmax). Run:
+// the edges' length, and the circles finely drawn against their disks (30,000 and 300,000
+// vertices filled at uniform:0.1,0.5), whose statistics are quadratic in the edges if the distance
+// to the walls scans every edge of a grid cell of side 2 rmax. Run:
 //   build/release/bench/frontpack_bench_stats
 // Figures are recorded in docs/performance.md.
 #include <benchmark/benchmark.h>
