@@ -149,7 +149,9 @@ DomainFile read_domain_file(const std::filesystem::path& path, const DomainReadO
     case DomainFormat::geojson:
     case DomainFormat::shapefile: {
 #if FRONTPACK_HAVE_GDAL
-      (void)detail::open_for_reading(path);  // IoError with the project's message when unreadable
+      if (format == DomainFormat::shapefile) {
+        (void)detail::open_for_reading(path);  // IoError with the project's message when unreadable
+      }  // (GeoJSON is read once, as text, by read_ogr: opening a FIFO twice would wait forever)
       detail::GisPolygons gis = detail::read_ogr(path, format == DomainFormat::geojson ? "GeoJSON" : "ESRI Shapefile");
       std::size_t rings = 0;
       for (const auto& names : gis.ring_names) {

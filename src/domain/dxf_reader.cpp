@@ -2,12 +2,8 @@
 
 #include <dl_creationadapter.h>
 #include <dl_dxf.h>
-#include <sys/mman.h>
-#include <unistd.h>
 
-#include <cerrno>
 #include <cmath>
-#include <cstring>
 #include <numbers>
 #include <optional>
 #include <set>
@@ -16,6 +12,7 @@
 #include <vector>
 
 #include "common/format.hpp"
+#include "common/memory_file.hpp"
 #include "common/numbers.hpp"
 #include "common/read_file.hpp"
 #include "domain/dxf_groups.hpp"
@@ -377,19 +374,6 @@ std::string units_of(const std::vector<DxfGroup>& groups, const std::string& sou
   return {};
 }
 
-// A file descriptor closed on scope exit.
-struct Fd {
-  int fd = -1;
-  explicit Fd(int f) : fd(f) {}
-  Fd(const Fd&) = delete;
-  Fd& operator=(const Fd&) = delete;
-  ~Fd() {
-    if (fd >= 0) {
-      ::close(fd);
-    }
-  }
-};
-
 }  // namespace
 
 DxfContents read_dxf(const std::filesystem::path& path) {
@@ -408,23 +392,10 @@ DxfContents read_dxf(const std::filesystem::path& path) {
   for (const DxfGroup& g : groups) {
     checked.append(std::to_string(g.code)).append("\n").append(g.value).append("\n");
   }
-  const Fd memory(::memfd_create("frontpack-dxf", MFD_CLOEXEC));
-  if (memory.fd < 0) {
-    throw IoError("cannot make a memory file to read '" + source + "' with dxflib: " + std::strerror(errno), source);
-  }
-  for (std::size_t done = 0; done < checked.size();) {
-    const ssize_t n = ::write(memory.fd, checked.data() + done, checked.size() - done);
-    if (n < 0 && errno == EINTR) {
-      continue;
-    }
-    if (n <= 0) {
-      throw IoError("cannot write a memory file to read '" + source + "' with dxflib: " + std::strerror(errno), source);
-    }
-    done += static_cast<std::size_t>(n);
-  }
+  const MemoryFile memory(checked, source, "dxflib");
   Reader reader(source, groups);
   DL_Dxf dxf;
-  if (!dxf.in("/proc/self/fd/" + std::to_string(memory.fd), &reader)) {
+  if (!dxf.in(memory.path(), &reader)) {
     throw DomainFileError(Kind::unreadable, "dxflib could not read the file as DXF", source);
   }
   reader.done();

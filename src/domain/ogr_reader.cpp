@@ -6,7 +6,11 @@
 
 #include <mutex>
 #include <string>
+#include <string_view>
 
+#include "common/memory_file.hpp"
+#include "common/read_file.hpp"
+#include "domain/geojson_numbers.hpp"
 #include "frontpack/errors.hpp"
 
 namespace frontpack::detail {
@@ -52,7 +56,19 @@ GisPolygons read_ogr(const std::filesystem::path& path, const char* driver) {
                           source);
   }
   OgrResult result;
-  m.read(source.c_str(), driver, &result);
+  if (std::string_view(driver) == "GeoJSON") {
+    const std::string text = read_text_file(path);
+    check_geojson_numbers(text, source);
+    const MemoryFile memory(text, source, "GDAL");
+    m.read(memory.path().c_str(), driver, &result);
+    // GDAL's messages name the file it opened: the memory file stands for `source`.
+    for (std::size_t at = 0; (at = result.message.find(memory.path(), at)) != std::string::npos;) {
+      result.message.replace(at, memory.path().size(), source);
+      at += source.size();
+    }
+  } else {
+    m.read(source.c_str(), driver, &result);
+  }
   if (result.error != 0) {
     throw DomainFileError(static_cast<DomainFileError::Kind>(result.error - 1), std::move(result.message), source,
                           std::move(result.entity));

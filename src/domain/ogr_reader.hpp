@@ -34,6 +34,10 @@ using OgrReadFunction = void(const char* path, const char* driver, OgrResult* ou
 /// Shapefile") only. Z is dropped. Throws DomainFileError (unreadable, empty, unsupported_entity
 /// for other geometry types, curves included) naming the file, layer and feature, and unreadable
 /// if the module cannot be loaded. GDAL's messages go into the error, never to stderr.
+///
+/// GeoJSON is read as text first (at most kMaxInputBytes, common/read_file.hpp), its numbers
+/// checked by the one number rule (domain/geojson_numbers.hpp), and GDAL reads that very text from
+/// a memory file; a Shapefile (binary, three files) GDAL reads by path.
 [[nodiscard]] GisPolygons read_ogr(const std::filesystem::path& path, const char* driver);
 
 }  // namespace frontpack::detail

@@ -78,6 +78,9 @@ if(FRONTPACK_WITH_GDAL)
   frontpack_tool_test(cad_info_geojson 0 "polygons: +1.*holes: +1.*area: +3" info ${C}/plate.geojson)
   frontpack_tool_test(cad_info_shapefile 0 "polygons: +2.*holes: +1.*area: +4.75" info ${C}/islands.shp)
   frontpack_tool_test(cad_geojson_point 3 "points.geojson: layer points, feature 0: geometry type Point" info ${C}/points.geojson)
+  # A GeoJSON number out of range is refused by the one number rule, not read as 0 by GDAL.
+  frontpack_tool_test(cad_geojson_underflow 3 "underflow.geojson: line 3: '1e-400' is out of the range of a double \\(underflows to 0\\)"
+    info ${C}/underflow.geojson)
 else()
   frontpack_tool_test(cad_no_gis_reader 5 "built without GDAL" info ${C}/plate.geojson)
 endif()
