@@ -230,10 +230,10 @@ TEST(Hostile, RadiiNearTheLargestDoubleFitNothing) {
       {fp::Radii::constant(std::numeric_limits<double>::max()), "no disk fits: the smallest radius, 1.79"},
       {fp::Radii::uniform(0.01, 1e308), "at the scale of this fill (largest |coordinate| + 5 rmax = 1.8e+308)"},
       {fp::Radii::uniform(1e200, 1e300), "no disk fits: the smallest radius, 1e+200 "}};
-  for (const auto& [r, why] : radii) {
+  for (const auto& [spec, why] : radii) {
     for (const fp::Method m : {fp::Method::closed, fp::Method::open, fp::Method::boundary}) {
-      SCOPED_TRACE(r.describe() + " " + fp::to_string(m));
-      fp::test::expect_nothing_fits([&] { return fill(d, m, r); }, why);
+      SCOPED_TRACE(spec.describe() + " " + fp::to_string(m));
+      fp::test::expect_nothing_fits([&d, m, &r = spec] { return fill(d, m, r); }, why);
     }
   }
 }
