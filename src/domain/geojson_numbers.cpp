@@ -59,6 +59,11 @@ bool in_token(char c) {
 }  // namespace
 
 void check_geojson_numbers(std::string_view text, const std::string& source) {
+  // Text that does not open a JSON object or array is no GeoJSON at all: GDAL says so.
+  const std::size_t first = text.find_first_not_of(" \t\r\n", text.starts_with("\xEF\xBB\xBF") ? 3 : 0);
+  if (first == std::string_view::npos || (text[first] != '{' && text[first] != '[')) {
+    return;
+  }
   std::size_t line = 1;
   for (std::size_t i = 0; i < text.size();) {
     const char c = text[i];

@@ -12,7 +12,8 @@ namespace frontpack::detail {
 /// for the first token outside a string that is not a JSON number in the range of a double
 /// ('1.5.5', '+1', '0x10', '1e400', '1e-400', '.5') or is a bare word other than true, false and
 /// null ('nan', 'Infinity'). Strings (with their escapes) are skipped whole; the JSON structure
-/// is left to GDAL.
+/// is left to GDAL, and so is text that does not open a JSON object or array (not GeoJSON at all:
+/// a DXF file given as GeoJSON is GDAL's "could not read the file as GeoJSON").
 void check_geojson_numbers(std::string_view text, const std::string& source);
 
 }  // namespace frontpack::detail
