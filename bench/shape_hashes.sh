@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # Prints one line per fill: shape, method, radius spec, seed, disks, sha256 of the CSV.
 # Every shapes/*.wkt with all three methods, four radius specs scaled to the shape's size
-# (1:4 uniform, 1:1.4 bidisperse, 1:20 lognormal, constant) and two seeds. A refactor that claims
+# (1:4 uniform, 1:1.4 bidisperse, 1:20 lognormal, constant) and two seeds; then the other runs
+# (periodic cells, jam, fraction, count, height, per-disk types), every output format, the three
+# decks (every file of each) and the JSON summary without its timings. A refactor that claims
 # bit-identical output runs it before and after and diffs the two listings:
 #
 #   bench/shape_hashes.sh build/release/tools/frontpack > before.txt   # on the old commit
@@ -39,3 +41,55 @@ for shape in shapes/*.wkt; do
     done
   done
 done
+
+# One line per file an extra run wrote: label, file name, sha256.
+extra() {
+  local label=$1
+  shift
+  rm -rf "$tmp/x"
+  mkdir -p "$tmp/x"
+  rc=0
+  (cd "$tmp/x" && "$tool" "$@" -q) || rc=$?
+  if [ "$rc" -ne 0 ]; then
+    echo "$label exit$rc"
+    return
+  fi
+  [ -f "$tmp/x/s.json" ] && python3 -c '
+import json, sys
+def strip(v):
+    if isinstance(v, dict):
+        return {k: strip(x) for k, x in v.items() if "seconds" not in k and k not in ("time", "source")}
+    if isinstance(v, list):
+        return [strip(x) for x in v]
+    return v
+d = strip(json.load(open(sys.argv[1])))
+json.dump(d, open(sys.argv[1], "w"), indent=1, sort_keys=True)' "$tmp/x/s.json"
+  # HASH_JSON_DIR=DIR keeps each summary (timings stripped) as DIR/LABEL.json, to tell added keys from changed ones.
+  if [ -n "${HASH_JSON_DIR:-}" ] && [ -f "$tmp/x/s.json" ]; then cp "$tmp/x/s.json" "$HASH_JSON_DIR/$label.json"; fi
+  (cd "$tmp/x" && find . -type f | LC_ALL=C sort | while read -r f; do
+    echo "$label $f $(sha256sum < "$f" | cut -c1-16)"
+  done)
+}
+tool=$(realpath "$tool")
+S=$(pwd)/shapes
+for method in closed boundary; do
+  extra "periodic-xy-$method" fill --periodic 1,1 --method "$method" --radius uniform:0.01,0.03 --seed 3 -o p.csv --json s.json
+  extra "periodic-x-$method" fill --periodic 0,0,1.5,1 --periodic-axes x --method "$method" --radius discrete:0.02:0.5,0.028:0.5 --seed 3 -o p.csv --json s.json
+done
+extra jam fill "$S/l_shape.wkt" --radius discrete:0.04:0.5,0.056:0.5 --jam --seed 2 -o p.csv --json s.json
+extra jam-periodic fill --periodic 1,1 --radius discrete:0.03:0.5,0.042:0.5 --jam --seed 2 -o p.csv --json s.json
+extra fraction fill "$S/plate_with_holes.wkt" --radius uniform:0.01,0.03 --fraction 0.6 --seed 4 -o p.csv --json s.json
+for method in closed open; do
+  extra "count-$method" fill "$S/l_shape.wkt" --method "$method" --radius uniform:0.02,0.04 --count 300 --seed 5 -o p.csv --json s.json
+done
+extra height fill "$S/annulus.wkt" --radius uniform:0.02,0.05 --height 0.3 --seed 6 -o p.csv --json s.json
+extra formats fill "$S/gear.wkt" --radius uniform:0.02,0.06 --types size:0.03,0.045 --seed 8 -o p.csv -o p.txt -o p.data -o p.vtp -o p.svg --json s.json
+extra region-types fill "$S/plate_with_holes.wkt" --radius uniform:0.01,0.03 --types "region:$S/l_shape.wkt" --seed 8 -o p.csv --json s.json
+for sim in lammps liggghts yade; do
+  extra "deck-$sim" fill "$S/annulus.wkt" --radius uniform:0.02,0.05 --seed 9 --deck "$sim" d --density 2500 --json s.json
+done
+extra deck-periodic fill --periodic 1,1 --radius uniform:0.02,0.04 --seed 9 --deck lammps d --density 1000
+extra dxf fill "$S/../tests/data/cad/drum.dxf" --radius uniform:0.02,0.05 --seed 10 -o p.csv --json s.json
+"$tool" fill "$S/l_shape.wkt" --seed 11 -q -o "$tmp/st.csv"
+extra stats stats "$S/l_shape.wkt" "$tmp/st.csv" --json s.json
+extra check check "$S/l_shape.wkt" "$tmp/st.csv" --json s.json
