@@ -91,5 +91,5 @@ done
 extra deck-periodic fill --periodic 1,1 --radius uniform:0.02,0.04 --seed 9 --deck lammps d --density 1000
 extra dxf fill "$S/../tests/data/cad/drum.dxf" --radius uniform:0.02,0.05 --seed 10 -o p.csv --json s.json
 "$tool" fill "$S/l_shape.wkt" --seed 11 -q -o "$tmp/st.csv"
-extra stats stats "$S/l_shape.wkt" "$tmp/st.csv" --json s.json
-extra check check "$S/l_shape.wkt" "$tmp/st.csv" --json s.json
+extra stats stats "$S/l_shape.wkt" ../st.csv --json s.json
+extra check check "$S/l_shape.wkt" ../st.csv --json s.json

@@ -601,7 +601,7 @@ frontpack_tool_check(fill_count_short 0 "target: +count 5000 asked, 237 placed: 
   JSON ${TOOL_OUT}/fill_count_short/c.json "target/count_requested=^5000$" "target/count_achieved=^237$"
   ARGS fill ${S}/unit_square.wkt --method open --count 5000 --json ${TOOL_OUT}/fill_count_short/c.json)
 
-# Exit 8 names why no disk was placed (src/limits.cpp, NothingFitsError): the radii, a fraction that
+# Exit 8 names why no disk was placed (src/fill/limits.cpp, NothingFitsError): the radii, a fraction that
 # keeps none, a start point outside the domain, the clearance, the precision at the coordinates.
 frontpack_tool_check(fill_nothing_fits_radii 8 "no disk fits: the smallest radius, 2 \\(constant: radius 2\\), is larger than any disk this domain holds \\(none of radius above 0\\.5\\); use smaller radii; nothing written"
   NO_FILES ${TOOL_OUT}/fill_nothing_fits_radii/p.csv

@@ -8,7 +8,7 @@
 
 #include "certify/cull.hpp"
 #include "certify/overlap_pass.hpp"
-#include "certify/periodic_pass.hpp"
+#include "periodic/overlap_pass.hpp"
 #include "certify/report.hpp"
 #include "frontpack/certify.hpp"
 

@@ -10,7 +10,7 @@
 #include <limits>
 #include <vector>
 
-#include "certify/periodic_pass.hpp"
+#include "periodic/overlap_pass.hpp"
 
 namespace frontpack::detail {
 

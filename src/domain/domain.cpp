@@ -13,7 +13,7 @@
 #include "common/format.hpp"
 #include "common/read_file.hpp"
 #include "domain/edge_grid.hpp"
-#include "domain/periodic_cell.hpp"
+#include "periodic/cell.hpp"
 #include "domain/ring_set.hpp"
 #include "domain/wkt_reader.hpp"
 

@@ -27,7 +27,7 @@
 #include "generate/acceptance.hpp"
 #include "generate/disk_grid.hpp"
 #include "generate/front_list.hpp"
-#include "generate/periodic_images.hpp"
+#include "periodic/front_images.hpp"
 #include "generate/scale.hpp"
 #include "generate/tangency.hpp"
 #include "generate/void_buckets.hpp"

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "common/release.hpp"
 #include "frontpack/fill.hpp"
 
 namespace frontpack::detail {
@@ -81,12 +82,5 @@ class RunControl {
 /// most its area: the estimate at density 1, E[r^2] standing for the mean square of the radii
 /// drawn, within a few percent of it once they are thousands). For reservations.
 [[nodiscard]] double bound_disks(const Box& box, double grow, const RadiusDistribution& radii);
-
-/// Frees a vector's memory (clear() keeps it): the generators free their working arrays before
-/// copying the disks out, so that the peak holds the disks and the output only.
-template <class T, class A>
-void release(std::vector<T, A>& v) {
-  std::vector<T, A>().swap(v);
-}
 
 }  // namespace frontpack::detail

@@ -12,7 +12,7 @@
 #include <numbers>
 #include <vector>
 
-#include "generate/periodic_wrap.hpp"
+#include "periodic/wrap.hpp"
 
 namespace frontpack::detail {
 

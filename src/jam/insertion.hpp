@@ -15,7 +15,7 @@
 #include "frontpack/domain.hpp"
 #include "frontpack/geometry.hpp"
 #include "frontpack/sizes.hpp"
-#include "generate/periodic_wrap.hpp"
+#include "periodic/wrap.hpp"
 #include "jam/disk_cells.hpp"
 
 namespace frontpack::detail {

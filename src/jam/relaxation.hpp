@@ -16,7 +16,7 @@
 #include "domain/edge_distance.hpp"
 #include "frontpack/domain.hpp"
 #include "frontpack/geometry.hpp"
-#include "generate/periodic_wrap.hpp"
+#include "periodic/wrap.hpp"
 #include "jam/disk_cells.hpp"
 
 namespace frontpack::detail {

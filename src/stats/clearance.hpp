@@ -25,7 +25,7 @@
 #include "domain/edge_distance.hpp"
 #include "frontpack/domain.hpp"
 #include "frontpack/geometry.hpp"
-#include "stats/periodic_images.hpp"
+#include "periodic/disk_images.hpp"
 
 namespace frontpack::detail {
 

@@ -12,7 +12,7 @@
 
 #include "domain/edge_distance.hpp"
 #include "frontpack/stats.hpp"
-#include "stats/periodic_images.hpp"
+#include "periodic/disk_images.hpp"
 
 namespace frontpack::detail {
 

@@ -20,7 +20,7 @@
 #include "common/stop.hpp"
 #include "stats/clearance.hpp"
 #include "stats/parts.hpp"
-#include "stats/periodic_images.hpp"
+#include "periodic/disk_images.hpp"
 
 namespace frontpack {
 

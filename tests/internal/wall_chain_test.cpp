@@ -8,7 +8,7 @@
 
 #include "frontpack/domain.hpp"
 #include "frontpack/errors.hpp"
-#include "walls/wall_chain.hpp"
+#include "decks/wall_chain.hpp"
 
 namespace {
 

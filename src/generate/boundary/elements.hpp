@@ -13,7 +13,7 @@
 
 #include "common/huge_pages.hpp"
 #include "generate/boundary/walls.hpp"
-#include "generate/periodic_wrap.hpp"
+#include "periodic/wrap.hpp"
 #include "generate/run_control.hpp"
 #include "generate/scale.hpp"
 #include "generate/settings.hpp"

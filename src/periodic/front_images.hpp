@@ -1,5 +1,5 @@
 // What a front keeps for a periodic cell besides its nodes: the images of the disks near a
-// periodic side (periodic_wrap.hpp: in the grid only, so that every neighbour search sees them),
+// periodic side (wrap.hpp: in the grid only, so that every neighbour search sees them),
 // and the cycles a front that meets itself splits into (FrontList::splice()). Header-only and
 // CGAL-free: the closed form adds images as it places disks.
 #pragma once
@@ -10,10 +10,9 @@
 #include <span>
 #include <vector>
 
+#include "common/release.hpp"
 #include "frontpack/geometry.hpp"
-#include "generate/disk_grid.hpp"
-#include "generate/periodic_wrap.hpp"
-#include "generate/run_control.hpp"
+#include "periodic/wrap.hpp"
 
 namespace frontpack::detail {
 
@@ -27,9 +26,9 @@ class PeriodicImages {
 
   /// The images of node id within `reach` of the cell: nodes flagged `image`, in the grid
   /// (`head`, `grid`) and not on the front; `add_links()` gives each the front's links.
-  template <class AddLinks>
-  void add(std::vector<Node>& nodes, std::vector<std::int32_t>& head, const CellGrid& grid, std::int32_t id,
-           double reach, AddLinks&& add_links) {
+  template <class Grid, class AddLinks>
+  void add(std::vector<Node>& nodes, std::vector<std::int32_t>& head, const Grid& grid, std::int32_t id, double reach,
+           AddLinks&& add_links) {
     const Node o = nodes[static_cast<std::size_t>(id)];
     std::array<std::array<double, 2>, 3> shifts{};
     const std::size_t n = wrap.image_shifts(o.x, o.y, reach, shifts);

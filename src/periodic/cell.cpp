@@ -1,4 +1,4 @@
-#include "domain/periodic_cell.hpp"
+#include "periodic/cell.hpp"
 
 #include <cmath>
 

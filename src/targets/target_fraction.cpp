@@ -9,9 +9,9 @@
 
 #include "common/format.hpp"
 #include "frontpack/certify.hpp"
-#include "target/scaled_radii.hpp"
-#include "target/targets.hpp"
-#include "target/thinning.hpp"
+#include "targets/scaled_radii.hpp"
+#include "targets/targets.hpp"
+#include "targets/thinning.hpp"
 
 namespace frontpack::detail {
 

@@ -7,7 +7,7 @@
 #include "common/format.hpp"
 #include "common/numbers.hpp"
 #include "common/text.hpp"
-#include "io/deck_physics.hpp"
+#include "decks/physics.hpp"
 
 namespace frontpack {
 

@@ -25,7 +25,7 @@
 // there are at most as many cells as disks); every disk visits at most 9 cells. (A few disks far
 // larger than the rest make every cell large: the cost then grows with the disks per cell, as
 // for any uniform grid.)
-#include "certify/periodic_pass.hpp"
+#include "periodic/overlap_pass.hpp"
 
 #include <algorithm>
 #include <array>

@@ -11,14 +11,15 @@
 #include "common/format.hpp"
 #include "common/rng.hpp"
 #include "common/stop.hpp"
+#include "fill/limits.hpp"
+#include "fill/progress_meter.hpp"
 #include "frontpack/fill.hpp"
 #include "generate/boundary/boundary_front.hpp"
 #include "generate/paper_front.hpp"
 #include "generate/run_control.hpp"
 #include "generate/settings.hpp"
 #include "jam/jam.hpp"
-#include "limits.hpp"
-#include "target/targets.hpp"
+#include "targets/targets.hpp"
 
 namespace frontpack {
 

@@ -1,5 +1,5 @@
 // Scaled radii and the way back (scaled_radii.hpp).
-#include "target/scaled_radii.hpp"
+#include "targets/scaled_radii.hpp"
 
 #include <algorithm>
 #include <cmath>

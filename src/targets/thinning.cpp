@@ -1,6 +1,6 @@
 // Thinning by local density (thinning.hpp): a priority queue of neighbourhood coverages with lazy
 // updates, over a uniform grid of cells of side `reach`.
-#include "target/thinning.hpp"
+#include "targets/thinning.hpp"
 
 #include <algorithm>
 #include <cmath>

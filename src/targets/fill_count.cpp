@@ -10,7 +10,7 @@
 #include <numbers>
 #include <vector>
 
-#include "target/targets.hpp"
+#include "targets/targets.hpp"
 
 namespace frontpack::detail {
 

@@ -6,7 +6,7 @@
 #include "common/format.hpp"
 #include "frontpack/io.hpp"
 #include "frontpack/version.hpp"
-#include "io/deck_physics.hpp"
+#include "decks/physics.hpp"
 
 namespace frontpack::detail {
 

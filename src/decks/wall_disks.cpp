@@ -20,7 +20,7 @@
 #include "common/budget.hpp"
 #include "common/format.hpp"
 #include "frontpack/deck.hpp"
-#include "walls/wall_chain.hpp"
+#include "decks/wall_chain.hpp"
 
 namespace frontpack {
 

@@ -8,7 +8,7 @@
 #include "common/stop.hpp"
 #include "frontpack/io.hpp"
 #include "frontpack/version.hpp"
-#include "io/deck_physics.hpp"
+#include "decks/physics.hpp"
 
 namespace frontpack::detail {
 

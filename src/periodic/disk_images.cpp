@@ -1,6 +1,6 @@
 // The disks of the periodic plane near a cell, and points brought into the cell
 // (stats/periodic_images.hpp).
-#include "stats/periodic_images.hpp"
+#include "periodic/disk_images.hpp"
 
 #include <cmath>
 #include <stdexcept>

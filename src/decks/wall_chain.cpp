@@ -1,6 +1,6 @@
 // The verification of a ring's wall chain (wall_chain.hpp): every statement a deck makes about its
 // walls, checked on the disks it writes.
-#include "walls/wall_chain.hpp"
+#include "decks/wall_chain.hpp"
 
 #include <algorithm>
 #include <cmath>

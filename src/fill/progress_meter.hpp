@@ -1,6 +1,5 @@
-// What a fill may take and how far it has come: the disk-count and memory estimates checked
-// against FillOptions::max_disks and memory_limit before the run, the clearance, the progress
-// reported while the fronts run, and why a run placed no disk. CGAL-free.
+// How far a fill has come: the progress reported while the fronts, the certifier and the jam
+// stage run (Generator::on_progress), and the ticks through which the stages report it. CGAL-free.
 #pragma once
 
 #include <cstddef>
@@ -11,30 +10,6 @@
 #include "frontpack/fill.hpp"
 
 namespace frontpack::detail {
-
-struct RunBudget {
-  double estimate = 0;           ///< disks a dense packing of every polygon's box takes
-  std::size_t memory_bytes = 0;  ///< what the run may take (0: no limit), for the generators
-};
-
-/// The estimate of the disks a fill makes, and the memory it may take (options.memory_limit, or
-/// three quarters of the physical memory if 0). Throws LimitError if the estimate exceeds
-/// options.max_disks, or if its disks at peak_bytes_per_disk each exceed the memory limit. A fill
-/// to a count (options.count > 0: the plain fill under fill_to_count) makes at most
-/// `generation_cap` disks, and is estimated so.
-[[nodiscard]] RunBudget check_limits(const Domain& domain, const FillOptions& options, const RadiusDistribution& radii,
-                                     std::size_t generation_cap);
-
-/// The clearance tangent disks keep (FillOptions::clearance, or a few ulps of the largest
-/// coordinate a disk can have if 0). Throws OptionError for a clearance below that, or a domain
-/// and radii too small for one.
-[[nodiscard]] double clearance_for(const Domain& domain, const FillOptions& options);
-
-/// Throws NothingFitsError naming why the fill of `domain` with `options` gave `packing` no disk:
-/// a fraction or a level that keeps none, radii larger than the domain holds, a start point
-/// outside the domain, a clearance (given, or the one the precision at the domain's coordinates
-/// needs) that leaves no room; else the disks generated, none inside.
-[[noreturn]] void throw_nothing_fits(const Domain& domain, const FillOptions& options, const Packing& packing);
 
 /// Progress of a fill across its polygons: the area of the disks generated over the area a dense
 /// packing covers (kEstimateFraction of it) where the method puts disks: the domain itself for

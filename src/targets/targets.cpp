@@ -1,5 +1,5 @@
 // The targets' dispatch and the fill to a level (targets.hpp).
-#include "target/targets.hpp"
+#include "targets/targets.hpp"
 
 #include <cmath>
 #include <numbers>
