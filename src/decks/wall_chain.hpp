@@ -1,4 +1,4 @@
-// The chain of wall disks along one ring (src/walls/wall_disks.cpp) and its verification: what a
+// The chain of wall disks along one ring (src/decks/wall_disks.cpp) and its verification: what a
 // deck says about its walls is checked on the disks it writes, not assumed from how they were
 // placed.
 #pragma once

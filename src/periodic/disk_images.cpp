@@ -1,5 +1,5 @@
 // The disks of the periodic plane near a cell, and points brought into the cell
-// (stats/periodic_images.hpp).
+// (periodic/disk_images.hpp).
 #include "periodic/disk_images.hpp"
 
 #include <cmath>

@@ -29,7 +29,7 @@ struct PeriodicWrap {
   /// The displacement d (a difference of two coordinates in the cell, |d| < the period) made the
   /// shortest among its images: the minimum image. Exact for |d| <= half the period; used where
   /// the two disks are known to be near (a front segment, a window walk), which a cell at least
-  /// 10 rmax wide guarantees (fill.cpp).
+  /// 10 rmax wide guarantees (the periodic check of the options).
   [[nodiscard]] double dx(double d) const noexcept { return x ? shortest(d, lx) : d; }
   [[nodiscard]] double dy(double d) const noexcept { return y ? shortest(d, ly) : d; }
 
