@@ -7,7 +7,10 @@
 #include <cerrno>
 #include <cstring>
 #include <memory>
+#include <stdexcept>
+#include <string_view>
 #include <unordered_set>
+#include <utility>
 
 #include "frontpack/errors.hpp"
 #include "option_values.hpp"
@@ -52,11 +55,50 @@ void remove_new_directories_locked() noexcept {
 
 }  // namespace
 
+namespace {
+
+// The tool's pictures by the names of their rows in the table of formats, which holds their
+// extensions (tests/formats_test.cpp: every picture row the tool writes has one).
+constexpr std::pair<std::string_view, Picture> kPictures[] = {
+    {"png", Picture::png}, {"svg", Picture::svg}, {"pdf", Picture::pdf}};
+
+frontpack::FormatUse use_of(bool pictures_only) {
+  return pictures_only ? frontpack::FormatUse::tool_pictures : frontpack::FormatUse::tool_writes;
+}
+
+}  // namespace
+
 std::string format_name(const OutputFormat& f) {
   if (const auto* picture = std::get_if<Picture>(&f)) {
-    return *picture == Picture::png ? "png" : *picture == Picture::svg ? "svg" : "pdf";
+    for (const auto& [name, p] : kPictures) {
+      if (p == *picture) {
+        return std::string(name);
+      }
+    }
+    return "unknown";
   }
   return frontpack::to_string(std::get<frontpack::Format>(f));
+}
+
+OutputFormat output_format(const frontpack::FileFormat& row) {
+  if (row.tool_writes && row.holds == frontpack::FileKind::picture) {
+    for (const auto& [name, p] : kPictures) {
+      if (name == row.name) {
+        return p;
+      }
+    }
+  } else if (row.tool_writes && row.written_as) {
+    return *row.written_as;
+  }
+  throw std::logic_error("the frontpack tool does not write " + std::string(row.name) + " files");
+}
+
+std::string format_names_help(bool pictures_only) {
+  return frontpack::format_names(use_of(pictures_only));
+}
+
+std::string extensions_help(bool pictures_only) {
+  return frontpack::format_extensions(use_of(pictures_only));
 }
 
 namespace {
@@ -64,40 +106,26 @@ namespace {
 // --format NAME (for every output) or the extension. Pictures (png, svg, pdf) are drawn by the
 // tool's renderer, so that fill and render draw the same picture.
 OutputFormat resolve_format(const std::filesystem::path& path, const std::string& name, bool pictures_only) {
-  const std::string known = pictures_only ? "png, svg or pdf" : "csv, yade, lammps, vtp, png, svg or pdf";
+  const frontpack::FormatUse use = use_of(pictures_only);
   if (!name.empty()) {
-    if (const auto picture = picture_from_name(name)) {
-      return *picture;
+    if (const frontpack::FileFormat* row = frontpack::find_format_by_name(name, use)) {
+      return output_format(*row);
     }
-    if (!pictures_only) {
-      try {
-        return frontpack::format_from_name(name);
-      } catch (const frontpack::OptionError&) {
-      }
-    }
-    throw frontpack::OptionError(cli::given_value("--format", name) + ": unknown format; expected " + known);
+    throw frontpack::OptionError(cli::given_value("--format", name) + ": unknown format; expected " +
+                                 frontpack::format_names(use));
   }
-  if (const auto picture = picture_from_path(path)) {
-    return *picture;
+  if (const frontpack::FileFormat* row = frontpack::find_format_by_extension(path, use)) {
+    return output_format(*row);
   }
+  const std::string ext = path.extension().string();
   if (pictures_only) {
-    throw frontpack::OptionError(std::string("-o ") + path.string() + ": unknown picture format '" +
-                                 path.extension().string() + "'; use .png, .svg or .pdf (or --format)");
+    throw frontpack::OptionError("-o " + path.string() + ": unknown picture format '" + ext + "'; use " +
+                                 frontpack::format_extensions(use) + " (or --format)");
   }
-  try {
-    return frontpack::format_from_path(path);
-  } catch (const frontpack::OptionError&) {
-    // The library's message lists only its own formats; name the tool's pictures too.
-    const std::string ext = path.extension().string();
-    std::string message("-o ");
-    message.append(path.string());
-    message.append(ext.empty() ? std::string(": no file extension to tell the format by")
-                               : std::string(": unknown format '") + ext + "'");
-    message.append(
-        "; use .csv, .txt or .yade (Yade), .data or .lmp (LAMMPS), .vtp (ParaView), .png, .svg or .pdf, "
-        "or --format NAME");
-    throw frontpack::OptionError(message);
-  }
+  throw frontpack::OptionError(
+      "-o " + path.string() +
+      (ext.empty() ? std::string(": no file extension to tell the format by") : ": unknown format '" + ext + "'") +
+      "; use " + frontpack::format_extensions(use) + ", or --format NAME");
 }
 
 // Fails early (before a long run) when an output's directory does not take a new file.

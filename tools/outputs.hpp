@@ -16,6 +16,7 @@
 #include <variant>
 #include <vector>
 
+#include "frontpack/formats.hpp"
 #include "frontpack/io.hpp"
 #include "frontpack/output_file.hpp"
 #include "render.hpp"
@@ -36,12 +37,23 @@ struct Output {
   OutputFormat format;
 };
 
-/// "csv", "png", ...
+/// "csv", "png", ...: the format's name in the table of formats (frontpack/formats.hpp).
 [[nodiscard]] std::string format_name(const OutputFormat& format);
 
-/// The format of each -o PATH: --format NAME for all of them, else each one's extension; with
-/// `pictures_only`, PNG, SVG and PDF only. Throws frontpack::OptionError naming the path and the
-/// formats known.
+/// The output format of a row of the table of formats that the tool writes (FormatUse::tool_writes):
+/// a picture (drawn with Cairo) or the library's format. Throws std::logic_error for a row the tool
+/// does not write.
+[[nodiscard]] OutputFormat output_format(const frontpack::FileFormat& row);
+
+/// Help texts from the table of formats, for a command that writes every format the tool writes
+/// (fill) or pictures only (render): the --format names ("csv, yade, ... or pdf") and the
+/// extensions of -o (".csv, .txt or .yade (Yade), ...").
+[[nodiscard]] std::string format_names_help(bool pictures_only);
+[[nodiscard]] std::string extensions_help(bool pictures_only);
+
+/// The format of each -o PATH: --format NAME for all of them, else each one's extension, both by
+/// the table of formats (names and extensions in any case); with `pictures_only`, PNG, SVG and PDF
+/// only. Throws frontpack::OptionError naming the path and the formats known.
 [[nodiscard]] std::vector<Output> resolve_outputs(const std::vector<std::string>& paths, const std::string& format,
                                                   bool pictures_only);
 

@@ -7,7 +7,6 @@
 
 #include <algorithm>
 #include <array>
-#include <cctype>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -33,11 +32,6 @@ using render_parts::font_px;
 using render_parts::kLevels;
 using render_parts::kMarginFraction;
 using render_parts::Rgb;
-
-std::string lower(std::string s) {
-  std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return s;
-}
 
 // Where Cairo's output goes. For SVG, `insert` (a <title> element) is written right after the
 // root element's start tag: Cairo writes text as glyph outlines, so without it the caption would
@@ -442,25 +436,6 @@ std::string xml_escaped(std::string_view text) {
 }
 
 }  // namespace
-
-std::optional<Picture> picture_from_name(std::string_view name) {
-  const std::string n = lower(std::string(name));
-  if (n == "png") {
-    return Picture::png;
-  }
-  if (n == "svg") {
-    return Picture::svg;
-  }
-  if (n == "pdf") {
-    return Picture::pdf;
-  }
-  return std::nullopt;
-}
-
-std::optional<Picture> picture_from_path(const std::filesystem::path& path) {
-  const std::string ext = path.extension().string();
-  return ext.size() > 1 ? picture_from_name(std::string_view(ext).substr(1)) : std::nullopt;
-}
 
 std::string cells_key(const frontpack::CellCoverage& cells, const std::optional<std::array<double, 2>>& range) {
   if (cells.cells == 0) {

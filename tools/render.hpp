@@ -19,10 +19,8 @@ namespace frontpack_tool {
 
 enum class Picture { png, svg, pdf };
 
-/// The picture format of a file name's extension (.png, .svg, .pdf; any case), if it is one.
-[[nodiscard]] std::optional<Picture> picture_from_path(const std::filesystem::path& path);
-/// "png", "svg" or "pdf".
-[[nodiscard]] std::optional<Picture> picture_from_name(std::string_view name);
+/// The names and extensions of the pictures: the table of formats (frontpack/formats.hpp), read
+/// by outputs.hpp.
 
 struct RenderOptions {
   int width_px = 1200;  ///< picture width in pixels (points for SVG/PDF); the height follows the domain

@@ -24,23 +24,19 @@
 
 #include "frontpack/budget.hpp"
 #include "frontpack/domain.hpp"
+#include "frontpack/formats.hpp"
 #include "frontpack/geometry.hpp"
 
 namespace frontpack {
 
-enum class DomainFormat : std::uint8_t {
-  automatic = 0,  ///< by the file's extension (domain_format_of)
-  wkt = 1,        ///< .wkt, .txt, any other extension: POLYGON or MULTIPOLYGON text
-  dxf = 2,        ///< .dxf: ASCII DXF (dxflib)
-  geojson = 3,    ///< .geojson, .json (GDAL/OGR)
-  shapefile = 4,  ///< .shp (GDAL/OGR)
-};
-
+/// "auto", or the format's name in the table of formats (frontpack/formats.hpp).
 [[nodiscard]] const char* to_string(DomainFormat format) noexcept;
-/// "auto", "wkt", "dxf", "geojson", "shapefile" (also "shp", "json"). Throws OptionError.
+/// "auto", "wkt", "dxf", "geojson", "shapefile" (also "shp", "json"), case-insensitively, by the
+/// table of formats. Throws OptionError.
 [[nodiscard]] DomainFormat parse_domain_format(std::string_view name);
-/// The format a file's extension names (case-insensitive): .dxf, .geojson or .json, .shp; WKT for
-/// any other name (.wkt, .txt, none): a WKT file may be named anything.
+/// The format a file's extension names (case-insensitive, by the table of formats): .dxf,
+/// .geojson or .json, .shp; WKT for any other name (.wkt, .txt, none): a WKT file may be named
+/// anything.
 [[nodiscard]] DomainFormat domain_format_of(const std::filesystem::path& path);
 
 /// Whether this build reads DXF, and GeoJSON and Shapefile (configure-time options

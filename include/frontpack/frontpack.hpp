@@ -9,6 +9,7 @@
 #include "frontpack/domain_file.hpp"
 #include "frontpack/errors.hpp"
 #include "frontpack/fill.hpp"
+#include "frontpack/formats.hpp"
 #include "frontpack/geometry.hpp"
 #include "frontpack/io.hpp"
 #include "frontpack/output_file.hpp"

@@ -26,30 +26,23 @@
 #include "frontpack/domain.hpp"
 #include "frontpack/errors.hpp"
 #include "frontpack/fill.hpp"  // OptionError
+#include "frontpack/formats.hpp"
 #include "frontpack/geometry.hpp"
 
 namespace frontpack {
 
-/// The file formats of the library's writers.
-enum class Format : std::uint8_t {
-  csv,     ///< "x,y,r" with a header line (write_csv, read_csv)
-  yade,    ///< Yade text for ymport.textExt(file, format='x_y_z_r') (write_yade, read_yade)
-  lammps,  ///< LAMMPS data file for atom_style sphere (write_lammps)
-  vtp,     ///< VTK XML PolyData for ParaView (write_vtp)
-  svg,     ///< a picture (write_svg)
-};
-
-/// "csv", "yade", "lammps", "vtp" or "svg".
+/// The format's name in the table of formats (frontpack/formats.hpp): "csv", "yade", "lammps",
+/// "vtp" or "svg".
 [[nodiscard]] const char* to_string(Format format) noexcept;
 
-/// The format for a file name's extension, compared case-insensitively: .csv -> csv; .txt and
-/// .yade -> yade (Yade's own examples name these files .txt); .data and .lmp -> lammps; .vtp;
-/// .svg. Throws OptionError naming the extension and listing the known ones (for .png, saying that
-/// PNG pictures are drawn by the frontpack tool, not by the library).
+/// The format for a file name's extension, compared case-insensitively, by the table of formats:
+/// .csv -> csv; .txt and .yade -> yade (Yade's own examples name these files .txt); .data and .lmp
+/// -> lammps; .vtp; .svg. Throws OptionError naming the extension and listing the known ones (for
+/// a picture only the tool draws, .png or .pdf, saying so).
 [[nodiscard]] Format format_from_path(const std::filesystem::path& path);
 
-/// The format named `name` (as to_string gives it, for a --format option). Throws OptionError
-/// listing the known names.
+/// The format named `name` (as to_string gives it, compared case-insensitively, for a --format
+/// option). Throws OptionError listing the known names.
 [[nodiscard]] Format format_from_name(std::string_view name);
 
 struct SvgStyle {
@@ -229,25 +222,16 @@ void write_file(const std::filesystem::path& path, Format format, const Domain& 
 [[nodiscard]] std::vector<Disk> read_vtp(std::istream& in, std::string_view source_name,
                                          std::string_view radius_array = {});
 
-/// The formats of the disk readers.
-enum class DiskFormat : std::uint8_t {
-  csv,          ///< read_csv
-  yade,         ///< read_yade
-  lammps,       ///< read_lammps (data file)
-  lammps_dump,  ///< read_lammps_dump
-  vtp,          ///< read_vtp
-};
-
-/// "csv", "yade", "lammps", "lammps-dump" or "vtp".
+/// The format's name in the table of formats: "csv", "yade", "lammps", "lammps-dump" or "vtp".
 [[nodiscard]] const char* to_string(DiskFormat format) noexcept;
 
-/// The reader for a file name's extension, compared case-insensitively: .csv; .txt and .yade;
-/// .data and .lmp (LAMMPS data); .dump and .lammpstrj (LAMMPS dump); .vtp. Throws OptionError
-/// naming the extension and listing the known ones.
+/// The reader for a file name's extension, compared case-insensitively, by the table of formats:
+/// .csv; .txt and .yade; .data and .lmp (LAMMPS data); .dump and .lammpstrj (LAMMPS dump); .vtp.
+/// Throws OptionError naming the extension and listing the known ones.
 [[nodiscard]] DiskFormat disk_format_from_path(const std::filesystem::path& path);
 
-/// The reader named `name` (as to_string gives it, for a --disks-format option). Throws
-/// OptionError listing the known names.
+/// The reader named `name` (as to_string gives it, compared case-insensitively, for a
+/// --disks-format option). Throws OptionError listing the known names.
 [[nodiscard]] DiskFormat disk_format_from_name(std::string_view name);
 
 /// Options of read_disks for the formats that have a choice.

@@ -40,6 +40,37 @@ DiskFormat disk_format(const std::filesystem::path& path, const std::optional<st
   return format ? disk_format_from_name(*format) : disk_format_from_path(path);
 }
 
+// The names of the formats serving `use`, as Python strings for a docstring: "'csv', 'yade' or 'svg'".
+std::string quoted_names(FormatUse use) {
+  std::vector<std::string> names;
+  for (const FileFormat& f : file_formats()) {
+    if (serves(f, use)) {
+      std::string name(1, '\'');  // built by append: GCC 12 warns (-Wrestrict) on "'" + std::string
+      names.push_back(name.append(f.name).append(1, '\''));
+    }
+  }
+  std::string out;
+  for (std::size_t k = 0; k < names.size(); ++k) {
+    out.append(k == 0 ? "" : k + 1 == names.size() ? " or " : ", ").append(names[k]);
+  }
+  return out;
+}
+
+// One row of the table of formats as a dict.
+py::dict format_dict(const FileFormat& f) {
+  static constexpr const char* kHolds[] = {"disks", "domain", "picture"};
+  py::dict d;
+  d["name"] = std::string(f.name);
+  d["extensions"] = std::vector<std::string>(f.extensions.begin(), f.extensions.end());
+  d["aliases"] = std::vector<std::string>(f.aliases.begin(), f.aliases.end());
+  d["holds"] = kHolds[static_cast<int>(f.holds)];
+  d["library_writes"] = f.written_as.has_value();
+  d["library_reads_disks"] = f.read_as.has_value();
+  d["library_reads_domain"] = f.domain_as.has_value();
+  d["tool_writes"] = f.tool_writes;
+  return d;
+}
+
 TypeRule type_rule(const py::handle& rule) {
   if (py::isinstance<py::str>(rule)) {
     return parse_type_rule(rule.cast<std::string>());
@@ -62,13 +93,15 @@ void bind_io(py::module_& m) {
         write_file(path, f, domain, ds, w.options);
       },
       py::arg("path"), py::arg("domain"), py::arg("disks"), py::arg("format") = py::none(), FRONTPACK_WRITE_KEYWORDS,
-      "Writes disks to `path` in `format` ('csv', 'yade', 'lammps', 'vtp', 'svg'; None: by the extension, .csv, "
-      ".txt/.yade, .data/.lmp, .vtp, .svg). Numbers are written in their shortest round-trip form, so what was "
-      "certified in memory is certified in the file. The file appears whole or not at all (a temporary file "
-      "renamed over the target). LAMMPS: the domain's bounding box is the box; `density`, `atom_type`, "
-      "`type_densities`, `atom_types` as LammpsOptions. SVG: `width` in pixels, `colour_by_size`. `types`: one "
-      "whole number >= 1 per disk (a CSV column, Yade's matId, the LAMMPS type, a VTP array). Raises OptionError, "
-      "IoError.");
+      ("Writes disks to `path` in `format` (" + quoted_names(FormatUse::library_writes) + "; None: by the extension, " +
+       format_extensions(FormatUse::library_writes) +
+       "). Numbers are written in their shortest round-trip form, so what was "
+       "certified in memory is certified in the file. The file appears whole or not at all (a temporary file "
+       "renamed over the target). LAMMPS: the domain's bounding box is the box; `density`, `atom_type`, "
+       "`type_densities`, `atom_types` as LammpsOptions. SVG: `width` in pixels, `colour_by_size`. `types`: one "
+       "whole number >= 1 per disk (a CSV column, Yade's matId, the LAMMPS type, a VTP array). Raises "
+       "OptionError, IoError.")
+          .c_str());
   m.def(
       "dumps",
       [](const Domain& domain, const py::handle& disks, const std::string& format, const py::handle& types,
@@ -85,7 +118,8 @@ void bind_io(py::module_& m) {
         return out.str();
       },
       py::arg("domain"), py::arg("disks"), py::arg("format"), FRONTPACK_WRITE_KEYWORDS,
-      "The text write() would put in a file of `format`, as a str.");
+      ("The text write() would put in a file of `format` (" + quoted_names(FormatUse::library_writes) + "), as a str.")
+          .c_str());
   m.def(
       "render",
       [](const std::filesystem::path& path, const Domain& domain, const py::handle& disks, double width,
@@ -113,10 +147,24 @@ void bind_io(py::module_& m) {
       },
       py::arg("path"), py::arg("format") = py::none(), py::kw_only(), py::arg("timestep") = py::none(),
       py::arg("radius_array") = "",
-      "Reads disks as an (N, 3) float64 array, bit for bit as written: format 'csv', 'yade', 'lammps' (a data "
-      "file), 'lammps-dump' (the last snapshot, or `timestep`), 'vtp' (the radius from `radius_array`, or the "
-      "first of radius, Radius, diameter, Diameter); None: by the extension (.csv, .txt/.yade, .data/.lmp, "
-      ".dump/.lammpstrj, .vtp). Raises IoError, DiskFileError (naming the line), OptionError.");
+      ("Reads disks as an (N, 3) float64 array, bit for bit as written: format " +
+       quoted_names(FormatUse::disk_reader) +
+       " ('lammps' a data file; 'lammps-dump' the last snapshot, or `timestep`; 'vtp' the radius from "
+       "`radius_array`, or the first of radius, Radius, diameter, Diameter); None: by the extension (" +
+       format_extensions(FormatUse::disk_reader) + "). Raises IoError, DiskFileError (naming the line), OptionError.")
+          .c_str());
+  m.def(
+      "file_formats",
+      [] {
+        py::list out;
+        for (const FileFormat& f : file_formats()) {
+          out.append(format_dict(f));
+        }
+        return out;
+      },
+      "The table of file formats (frontpack/formats.hpp), one dict per format: name, extensions, aliases, holds "
+      "('disks', 'domain', 'picture'), library_writes, library_reads_disks, library_reads_domain, tool_writes. "
+      "Every format name and extension the package and the tool accept comes from it.");
   m.def(
       "assign_types",
       [](const py::handle& rule, const py::handle& disks) {

@@ -41,3 +41,27 @@ def test_exception_fields_are_in_the_stubs():
         frontpack.Domain.from_wkt("POLYGON((")
     except frontpack.WktError as e:
         assert wkt <= set(vars(e)) and set(vars(e)) <= wkt
+
+
+def _literal(node):
+    """The strings of a Literal[...] annotation (inside Optional[...] too)."""
+    while isinstance(node, ast.Subscript) and node.value.id != "Literal":
+        node = node.slice
+    return [e.value for e in node.slice.elts]
+
+
+def test_format_literals_are_the_table_of_formats():
+    # The names a function accepts come from the library's one table of formats.
+    table = frontpack._core.file_formats()
+    written = [f["name"] for f in table if f["library_writes"]]
+    read = [f["name"] for f in table if f["library_reads_disks"]]
+    write_format = next(n for n in STUBS.body if isinstance(n, ast.Assign) and n.targets[0].id == "WriteFormat")
+    assert _literal(write_format.value) == written
+    read_disks = next(a for a in TOP["read_disks"].args.args if a.arg == "format")
+    assert _literal(read_disks.annotation) == read
+    for name in written:
+        assert f"'{name}'" in frontpack.write.__doc__ and f"'{name}'" in frontpack.dumps.__doc__
+    for f in table:
+        if f["library_reads_disks"]:
+            assert f"'{f['name']}'" in frontpack.read_disks.__doc__
+            assert all(ext in frontpack.read_disks.__doc__ for ext in f["extensions"])

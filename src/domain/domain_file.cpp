@@ -3,13 +3,13 @@
 #include "frontpack/domain_file.hpp"
 
 #include <algorithm>
-#include <cctype>
 #include <cmath>
 #include <string>
 #include <utility>
 
 #include "common/format.hpp"
 #include "common/read_file.hpp"
+#include "common/text.hpp"
 #include "frontpack/errors.hpp"
 
 #include "domain/contour_chain.hpp"
@@ -24,15 +24,6 @@
 namespace frontpack {
 
 namespace {
-
-constexpr const char* kFormats = "wkt, dxf, geojson or shapefile";
-
-std::string lower(std::string_view s) {
-  std::string out(s);
-  std::transform(out.begin(), out.end(), out.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return out;
-}
 
 void check_options(const DomainReadOptions& o) {
   if (!std::isfinite(o.max_deviation) || o.max_deviation < 0) {
@@ -58,48 +49,29 @@ void check_options(const DomainReadOptions& o) {
 }  // namespace
 
 const char* to_string(DomainFormat format) noexcept {
-  switch (format) {
-    case DomainFormat::automatic: return "auto";
-    case DomainFormat::wkt: return "wkt";
-    case DomainFormat::dxf: return "dxf";
-    case DomainFormat::geojson: return "geojson";
-    case DomainFormat::shapefile: return "shapefile";
+  if (format == DomainFormat::automatic) {
+    return "auto";
   }
-  return "unknown";
+  const auto rows = file_formats();
+  const auto it =
+      std::find_if(rows.begin(), rows.end(), [format](const FileFormat& f) { return f.domain_as == format; });
+  return it == rows.end() ? "unknown" : it->name.data();  // the table's names are string literals
 }
 
 DomainFormat parse_domain_format(std::string_view name) {
-  const std::string n = lower(name);
-  if (n == "auto") {
+  if (detail::ascii_lower(name) == "auto") {
     return DomainFormat::automatic;
   }
-  if (n == "wkt") {
-    return DomainFormat::wkt;
+  if (const FileFormat* f = find_format_by_name(name, FormatUse::domain_reader)) {
+    return *f->domain_as;
   }
-  if (n == "dxf") {
-    return DomainFormat::dxf;
-  }
-  if (n == "geojson" || n == "json") {
-    return DomainFormat::geojson;
-  }
-  if (n == "shapefile" || n == "shp") {
-    return DomainFormat::shapefile;
-  }
-  throw OptionError("domain format '" + std::string(name) + "': expected auto, " + kFormats);
+  throw OptionError("domain format '" + std::string(name) + "': expected auto, " +
+                    format_names(FormatUse::domain_reader));
 }
 
 DomainFormat domain_format_of(const std::filesystem::path& path) {
-  const std::string ext = lower(path.extension().string());
-  if (ext == ".dxf") {
-    return DomainFormat::dxf;
-  }
-  if (ext == ".geojson" || ext == ".json") {
-    return DomainFormat::geojson;
-  }
-  if (ext == ".shp") {
-    return DomainFormat::shapefile;
-  }
-  return DomainFormat::wkt;  // .wkt, .txt, and any other name: WKT needs no extension
+  const FileFormat* f = find_format_by_extension(path, FormatUse::domain_reader);
+  return f != nullptr ? *f->domain_as : DomainFormat::wkt;  // any other name: WKT needs no extension
 }
 
 bool has_dxf_reader() noexcept {

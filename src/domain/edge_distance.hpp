@@ -23,7 +23,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "common/grid_cells.hpp"
+#include "common/bucket_grid.hpp"
 #include "frontpack/domain.hpp"
 #include "frontpack/geometry.hpp"
 
@@ -51,23 +51,14 @@ class EdgeDistanceIndex {
   /// these calls in this order. Without the grid (the constructor without h): within().
   template <class F>
   void near(Point p, double d, F&& f) const {
-    if (start_.empty()) {
+    if (grid_.empty()) {
       within(p, d, f);
       return;
     }
-    const std::size_t i0 = column(p.x - d);
-    const std::size_t i1 = column(p.x + d);
-    const std::size_t j0 = row(p.y - d);
-    const std::size_t j1 = row(p.y + d);
-    for (std::size_t j = j0; j <= j1; ++j) {
-      for (std::size_t i = i0; i <= i1; ++i) {
-        const std::size_t c = j * nx_ + i;
-        for (std::size_t k = start_[c]; k < start_[c + 1]; ++k) {
-          const Point q = closest(edges_[k], p);
-          f(q, std::hypot(q.x - p.x, q.y - p.y));
-        }
-      }
-    }
+    grid_.visit_box(frame_, Box{p.x - d, p.y - d, p.x + d, p.y + d}, [&](std::uint32_t e) {
+      const Point q = closest(e, p);
+      f(q, std::hypot(q.x - p.x, q.y - p.y));
+    });
   }
 
   /// min(cap, the distance from p to the nearest edge): exactly the minimum of cap and every
@@ -117,6 +108,29 @@ class EdgeDistanceIndex {
   void build_tree();
   std::uint32_t build_node(std::uint32_t begin, std::uint32_t end, std::vector<Point>& mid);
   void build_grid(const Domain& domain, double h);
+  // Calls emit(c) for each grid cell edge e passes through: rasterized along the edge, column by
+  // column, never over its bounding box (a diagonal edge's box is O(length^2) cells).
+  template <class Emit>
+  void edge_cells(std::size_t e, Emit&& emit) const {
+    const Point a = a_[e];
+    const Point c = b_[e];
+    const double xlo = std::min(a.x, c.x);
+    const double xhi = std::max(a.x, c.x);
+    for (std::size_t i = frame_.column(xlo); i <= frame_.column(xhi); ++i) {
+      // The edge's y range over this column's x range (conservative by a relative 1e-9).
+      const double cx0 = std::max(xlo, frame_.x0 + static_cast<double>(i) * h_);
+      const double cx1 = std::min(xhi, frame_.x0 + static_cast<double>(i + 1) * h_);
+      double ylo = std::min(a.y, c.y);
+      double yhi = std::max(a.y, c.y);
+      if (c.x != a.x) {
+        const double ya = a.y + (c.y - a.y) * ((cx0 - a.x) / (c.x - a.x));
+        const double yb = a.y + (c.y - a.y) * ((cx1 - a.x) / (c.x - a.x));
+        ylo = std::max(ylo, std::min(ya, yb) - 1e-9 * h_);
+        yhi = std::min(yhi, std::max(ya, yb) + 1e-9 * h_);
+      }
+      frame_.visit_block(i, i, frame_.row(ylo), frame_.row(yhi), emit);
+    }
+  }
   // Appends the edges within d of p (and maybe a few farther by the rounding margin).
   void collect(Point p, double d, std::vector<std::uint32_t>& out) const;
   // A lower bound of the distance from p to any point of the node's edges, less the rounding
@@ -138,8 +152,6 @@ class EdgeDistanceIndex {
     t = std::clamp(t, 0.0, 1.0);
     return Point{a.x + t * dx, a.y + t * dy};
   }
-  [[nodiscard]] std::size_t column(double x) const { return cell_index(x, x0_, inv_h_, nx_); }
-  [[nodiscard]] std::size_t row(double y) const { return cell_index(y, y0_, inv_h_, ny_); }
   [[nodiscard]] Point closest(std::uint32_t e, Point p) const {
     ++examined_;
     return closest_on(a_[e], b_[e], p);
@@ -152,15 +164,11 @@ class EdgeDistanceIndex {
   std::vector<Node> nodes_;
   std::vector<std::uint32_t> order_;
   double margin_ = 0;
-  // The grid for near(): cells of side h_, start_ empty without it.
+  // The grid for near(): cells of side h_, each listing the edges that pass through it; empty
+  // without it.
   double h_ = 1;
-  double inv_h_ = 1;
-  double x0_ = 0;
-  double y0_ = 0;
-  std::size_t nx_ = 1;
-  std::size_t ny_ = 1;
-  std::vector<std::size_t> start_;
-  std::vector<std::uint32_t> edges_;
+  GridFrame frame_;
+  BucketGrid<std::uint32_t, std::size_t> grid_;
   mutable std::size_t examined_ = 0;
 };
 

@@ -1,6 +1,8 @@
 // The uniform grid over the placed disks that both generators' neighbour searches run on (the
 // boundary front also lists its walls by the same cells), and the scan over a block of its cells.
-// Header-only and CGAL-free: every candidate disk scans it.
+// Header-only and CGAL-free: every candidate disk scans it. Not common/bucket_grid.hpp's lists,
+// which are built once from a whole list: this grid grows one disk at a time as the fronts place
+// them (a chain per cell, its heads gathered without a branch by visit_cells()).
 #pragma once
 
 #include <array>

@@ -1,65 +1,48 @@
-// The disk readers' formats: names, extensions, and read_disks() choosing the reader.
+// The disk readers' formats by name and extension (the table of formats, frontpack/formats.hpp),
+// and read_disks() choosing the reader.
+#include <algorithm>
 #include <fstream>
 #include <string>
 
 #include "common/read_file.hpp"
-#include "common/text.hpp"
 #include "frontpack/io.hpp"
 
 namespace frontpack {
 
 namespace {
 
-constexpr const char* kExtensions =
-    ".csv, .txt or .yade (Yade), .data or .lmp (LAMMPS data), .dump or .lammpstrj (LAMMPS dump), .vtp";
-constexpr DiskFormat kFormats[] = {DiskFormat::csv, DiskFormat::yade, DiskFormat::lammps, DiskFormat::lammps_dump,
-                                   DiskFormat::vtp};
+// The row of the table of formats that the library reads as `format`; nullptr for a value outside
+// the enum.
+const FileFormat* row_of(DiskFormat format) noexcept {
+  const auto rows = file_formats();
+  const auto it = std::find_if(rows.begin(), rows.end(), [format](const FileFormat& f) { return f.read_as == format; });
+  return it == rows.end() ? nullptr : &*it;
+}
 
 }  // namespace
 
 const char* to_string(DiskFormat format) noexcept {
-  switch (format) {
-    case DiskFormat::csv: return "csv";
-    case DiskFormat::yade: return "yade";
-    case DiskFormat::lammps: return "lammps";
-    case DiskFormat::lammps_dump: return "lammps-dump";
-    case DiskFormat::vtp: return "vtp";
-  }
-  return "unknown";
+  const FileFormat* row = row_of(format);
+  return row != nullptr ? row->name.data() : "unknown";  // the table's names are string literals
 }
 
 DiskFormat disk_format_from_path(const std::filesystem::path& path) {
-  const std::string original = path.extension().string();
-  const std::string ext = detail::ascii_lower(original);
-  if (ext == ".csv") {
-    return DiskFormat::csv;
+  if (const FileFormat* f = find_format_by_extension(path, FormatUse::disk_reader)) {
+    return *f->read_as;
   }
-  if (ext == ".txt" || ext == ".yade") {
-    return DiskFormat::yade;
-  }
-  if (ext == ".data" || ext == ".lmp") {
-    return DiskFormat::lammps;
-  }
-  if (ext == ".dump" || ext == ".lammpstrj") {
-    return DiskFormat::lammps_dump;
-  }
-  if (ext == ".vtp") {
-    return DiskFormat::vtp;
-  }
+  const std::string ext = path.extension().string();
   throw OptionError("'" + path.string() + "': " +
                     (ext.empty() ? std::string("no file extension to tell the format by")
-                                 : "unknown disk file format '" + original + "'") +
-                    "; frontpack reads " + kExtensions);
+                                 : "unknown disk file format '" + ext + "'") +
+                    "; frontpack reads " + format_extensions(FormatUse::disk_reader));
 }
 
 DiskFormat disk_format_from_name(std::string_view name) {
-  for (const DiskFormat f : kFormats) {
-    if (name == to_string(f)) {
-      return f;
-    }
+  if (const FileFormat* f = find_format_by_name(name, FormatUse::disk_reader)) {
+    return *f->read_as;
   }
-  throw OptionError("unknown disk file format '" + std::string(name) +
-                    "'; expected csv, yade, lammps, lammps-dump or vtp");
+  throw OptionError("unknown disk file format '" + std::string(name) + "'; expected " +
+                    format_names(FormatUse::disk_reader));
 }
 
 std::vector<Disk> read_disks(const std::filesystem::path& path, DiskFormat format, const ReadOptions& options) {

@@ -1,4 +1,5 @@
-// Writers: SVG, CSV, Yade, LAMMPS, VTK PolyData; format names; write_file() through OutputFile.
+// Writers: SVG, CSV, Yade, LAMMPS, VTK PolyData; their formats by name and extension (the table
+// of formats, frontpack/formats.hpp); write_file() through OutputFile.
 #include "frontpack/io.hpp"
 
 #include <algorithm>
@@ -53,58 +54,45 @@ void check_disks(const char* format, std::span<const Disk> disks) {
   }
 }
 
-constexpr const char* known_extensions = ".csv, .txt or .yade (Yade), .data or .lmp (LAMMPS), .vtp, .svg";
+// The row of the table of formats that the library writes as `format`; nullptr for a value
+// outside the enum.
+const FileFormat* row_of(Format format) noexcept {
+  const auto rows = file_formats();
+  const auto it =
+      std::find_if(rows.begin(), rows.end(), [format](const FileFormat& f) { return f.written_as == format; });
+  return it == rows.end() ? nullptr : &*it;
+}
 
 }  // namespace
 
 const char* to_string(Format format) noexcept {
-  switch (format) {
-    case Format::csv: return "csv";
-    case Format::yade: return "yade";
-    case Format::lammps: return "lammps";
-    case Format::vtp: return "vtp";
-    case Format::svg: return "svg";
-  }
-  return "unknown";
+  const FileFormat* row = row_of(format);
+  return row != nullptr ? row->name.data() : "unknown";  // the table's names are string literals
 }
 
 Format format_from_path(const std::filesystem::path& path) {
-  const std::string original = path.extension().string();
-  const std::string ext = detail::ascii_lower(original);
-  if (ext == ".csv") {
-    return Format::csv;
+  if (const FileFormat* f = find_format_by_extension(path, FormatUse::library_writes)) {
+    return *f->written_as;
   }
-  if (ext == ".txt" || ext == ".yade") {
-    return Format::yade;
-  }
-  if (ext == ".data" || ext == ".lmp") {
-    return Format::lammps;
-  }
-  if (ext == ".vtp") {
-    return Format::vtp;
-  }
-  if (ext == ".svg") {
-    return Format::svg;
-  }
-  std::string name(1, '\'');
+  std::string name(1, '\'');  // built by append: GCC 12 warns (-Wrestrict) on "'" + std::string
   name.append(path.string()).append(1, '\'');
-  if (ext == ".png") {
-    throw OptionError(name + ": PNG pictures are drawn by the frontpack tool (frontpack render), not by the library; " +
-                      "the library writes " + known_extensions);
+  const std::string known = format_extensions(FormatUse::library_writes);
+  if (const FileFormat* f = find_format_by_extension(path, FormatUse::tool_pictures)) {
+    throw OptionError(name + ": " + detail::ascii_upper(f->name) +
+                      " pictures are drawn by the frontpack tool (frontpack render), not by the library; " +
+                      "the library writes " + known);
   }
-  if (ext.empty()) {
-    throw OptionError(name + ": no file extension to tell the format by; use " + known_extensions);
+  if (path.extension().empty()) {
+    throw OptionError(name + ": no file extension to tell the format by; use " + known);
   }
-  throw OptionError(name + ": unknown format '" + original + "'; use " + known_extensions);
+  throw OptionError(name + ": unknown format '" + path.extension().string() + "'; use " + known);
 }
 
 Format format_from_name(std::string_view name) {
-  for (const Format f : {Format::csv, Format::yade, Format::lammps, Format::vtp, Format::svg}) {
-    if (name == to_string(f)) {
-      return f;
-    }
+  if (const FileFormat* f = find_format_by_name(name, FormatUse::library_writes)) {
+    return *f->written_as;
   }
-  throw OptionError("unknown format '" + std::string(name) + "'; expected csv, yade, lammps, vtp or svg");
+  throw OptionError("unknown format '" + std::string(name) + "'; expected " + format_names(FormatUse::library_writes));
 }
 
 void write_svg(std::ostream& out, const Domain& domain, std::span<const Disk> disks, const SvgStyle& style,

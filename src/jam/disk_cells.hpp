@@ -1,7 +1,8 @@
 // The disks of the jam stage sorted into the cells of a uniform grid, for the neighbour searches of
 // the relaxation (its pair lists) and of the insertion (the clearance of a point). Every disk whose
 // centre lies within `reach` of a point of a cell lies in the 3 x 3 cells around it, wrapped on a
-// periodic axis.
+// periodic axis. The lists are common/bucket_grid.hpp's; the wrapped neighbours and the whole cells
+// that tile a period (each axis its own cell size) are the jam's own.
 #pragma once
 
 #include <algorithm>
@@ -10,7 +11,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "common/grid_cells.hpp"
+#include "common/bucket_grid.hpp"
 #include "frontpack/geometry.hpp"
 
 namespace frontpack::detail {
@@ -24,8 +25,8 @@ class DiskCells {
     wrap_y_ = wrap_y;
     const double margin_x = wrap_x ? 0 : reach;
     const double margin_y = wrap_y ? 0 : reach;
-    x0_ = cell.xmin - margin_x;
-    y0_ = cell.ymin - margin_y;
+    const double x0 = cell.xmin - margin_x;
+    const double y0 = cell.ymin - margin_y;
     const double w = cell.xmax - cell.xmin + 2 * margin_x;
     const double h = cell.ymax - cell.ymin + 2 * margin_y;
     // Cells at least `reach` wide, and at most 4 per disk: a domain whose parts lie far apart covers
@@ -47,49 +48,39 @@ class DiskCells {
       const std::size_t whole = g >= 1 ? static_cast<std::size_t>(std::min(g, static_cast<double>(kMaxAxisCells))) : 0;
       return std::max<std::size_t>(wrap ? 3 : 1, whole);
     };
-    nx_ = cells(w, wrap_x);
-    ny_ = cells(h, wrap_y);
-    inv_x_ = static_cast<double>(nx_) / w;
-    inv_y_ = static_cast<double>(ny_) / h;
-    // Counting sort of the disks into their cells.
-    start_.assign(nx_ * ny_ + 1, 0);
-    for (const Disk& d : disks) {
-      ++start_[cell_of(d.centre) + 1];
-    }
-    for (std::size_t c = 0; c < nx_ * ny_; ++c) {
-      start_[c + 1] += start_[c];
-    }
-    items_.resize(disks.size());
-    fill_.assign(start_.begin(), start_.end() - 1);
-    for (std::uint32_t i = 0; i < disks.size(); ++i) {
-      items_[fill_[cell_of(disks[i].centre)]++] = i;
-    }
+    frame_.x0 = x0;
+    frame_.y0 = y0;
+    frame_.nx = cells(w, wrap_x);
+    frame_.ny = cells(h, wrap_y);
+    frame_.inv_x = static_cast<double>(frame_.nx) / w;
+    frame_.inv_y = static_cast<double>(frame_.ny) / h;
+    grid_.build(frame_.cells(), disks.size(),
+                [this, &disks](std::size_t i, auto&& emit) { emit(frame_.cell_of(disks[i].centre)); });
   }
 
-  [[nodiscard]] std::size_t cells() const noexcept { return nx_ * ny_; }
-  [[nodiscard]] std::size_t cell_of(Point p) const noexcept {
-    return cell_index(p.y, y0_, inv_y_, ny_) * nx_ + cell_index(p.x, x0_, inv_x_, nx_);
-  }
-  /// The disks of cell c: items()[begin(c)] .. items()[end(c) - 1].
-  [[nodiscard]] std::uint32_t begin(std::size_t c) const noexcept { return start_[c]; }
-  [[nodiscard]] std::uint32_t end(std::size_t c) const noexcept { return start_[c + 1]; }
-  [[nodiscard]] std::uint32_t item(std::uint32_t e) const noexcept { return items_[e]; }
+  [[nodiscard]] std::size_t cells() const noexcept { return frame_.cells(); }
+  [[nodiscard]] std::size_t cell_of(Point p) const noexcept { return frame_.cell_of(p); }
+  /// The disks of cell c: item(begin(c)) .. item(end(c) - 1).
+  [[nodiscard]] std::uint32_t begin(std::size_t c) const noexcept { return grid_.begin(c); }
+  [[nodiscard]] std::uint32_t end(std::size_t c) const noexcept { return grid_.end(c); }
+  [[nodiscard]] std::uint32_t item(std::uint32_t e) const noexcept { return grid_.item(e); }
 
   /// Calls visit(k) for each of the 3 x 3 cells k around cell c (c included) that the grid has,
   /// row by row from below.
   template <class Visit>
   void neighbours(std::size_t c, Visit&& visit) const {
-    const std::size_t cx = c % nx_;
-    const std::size_t cy = c / nx_;
+    const std::size_t nx = frame_.nx;
+    const std::size_t cx = c % nx;
+    const std::size_t cy = c / nx;
     for (int oy = -1; oy <= 1; ++oy) {
       std::size_t ky = 0;
-      if (!step(cy, oy, ny_, wrap_y_, ky)) {
+      if (!step(cy, oy, frame_.ny, wrap_y_, ky)) {
         continue;
       }
       for (int ox = -1; ox <= 1; ++ox) {
         std::size_t kx = 0;
-        if (step(cx, ox, nx_, wrap_x_, kx)) {
-          visit(ky * nx_ + kx);
+        if (step(cx, ox, nx, wrap_x_, kx)) {
+          visit(ky * nx + kx);
         }
       }
     }
@@ -113,16 +104,10 @@ class DiskCells {
 
   bool wrap_x_ = false;
   bool wrap_y_ = false;
-  double x0_ = 0;
-  double y0_ = 0;
-  double inv_x_ = 0;
-  double inv_y_ = 0;
-  std::size_t nx_ = 1;
-  std::size_t ny_ = 1;
-  // Reused from build to build: nothing is allocated once the vectors have grown.
-  std::vector<std::uint32_t> start_;
-  std::vector<std::uint32_t> items_;
-  std::vector<std::uint32_t> fill_;
+  // Whole cells over the cell and its margins; 32-bit offsets (fewer than 2^32 disks, each listed
+  // once), reused from build to build: nothing is allocated once the lists have grown.
+  GridFrame frame_;
+  BucketGrid<std::uint32_t, std::uint32_t> grid_;
 };
 
 }  // namespace frontpack::detail

@@ -36,47 +36,21 @@ Clearance::Clearance(const Domain& domain, const DiskImages& images, const EdgeD
   if (!(side_ > 0) || !std::isfinite(side_)) {
     side_ = std::max({w, h, 1e-300});
   }
-  inv_side_ = 1 / side_;
-  x0_ = b.xmin;
-  y0_ = b.ymin;
-  nx_ = axis_cells(std::ceil(w * inv_side_) - 1, kMaxAxisCells);
-  ny_ = axis_cells(std::ceil(h * inv_side_) - 1, kMaxAxisCells);
-  start_.assign(nx_ * ny_ + 1, 0);
-  const auto cells = [&](const Disk& d, auto&& f) {
-    const std::size_t i0 = column(d.centre.x - d.radius);
-    const std::size_t i1 = column(d.centre.x + d.radius);
-    const std::size_t j0 = row(d.centre.y - d.radius);
-    const std::size_t j1 = row(d.centre.y + d.radius);
-    for (std::size_t j = j0; j <= j1; ++j) {
-      for (std::size_t i = i0; i <= i1; ++i) {
-        f(j * nx_ + i);
-      }
-    }
-  };
-  for (const Disk& d : disks) {
-    cells(d, [this](std::size_t c) { ++start_[c + 1]; });
-  }
-  for (std::size_t c = 0; c < nx_ * ny_; ++c) {
-    start_[c + 1] += start_[c];
-  }
-  members_.resize(start_.back());
-  std::vector<std::size_t> fill(start_.begin(), start_.end() - 1);
-  for (std::size_t k = 0; k < disks.size(); ++k) {
-    cells(disks[k], [&](std::size_t c) { members_[fill[c]++] = static_cast<std::uint32_t>(k); });
-  }
-}
-
-std::size_t Clearance::column(double x) const noexcept {
-  return cell_index(x, x0_, inv_side_, nx_);
-}
-
-std::size_t Clearance::row(double y) const noexcept {
-  return cell_index(y, y0_, inv_side_, ny_);
+  frame_.inv_x = frame_.inv_y = 1 / side_;
+  frame_.x0 = b.xmin;
+  frame_.y0 = b.ymin;
+  frame_.nx = axis_cells(std::ceil(w * frame_.inv_x) - 1, kMaxAxisCells);
+  frame_.ny = axis_cells(std::ceil(h * frame_.inv_y) - 1, kMaxAxisCells);
+  members_.build_boxes(frame_, disks.size(), [&disks](std::size_t k) {
+    const Disk& d = disks[k];
+    return Box{d.centre.x - d.radius, d.centre.y - d.radius, d.centre.x + d.radius, d.centre.y + d.radius};
+  });
 }
 
 Square Clearance::cell(std::size_t i, std::size_t j) const noexcept {
   const double a = side_ / 2;
-  return Square{x0_ + (static_cast<double>(i) + 0.5) * side_, y0_ + (static_cast<double>(j) + 0.5) * side_, a};
+  return Square{frame_.x0 + (static_cast<double>(i) + 0.5) * side_, frame_.y0 + (static_cast<double>(j) + 0.5) * side_,
+                a};
 }
 
 void Clearance::block(std::size_t i, std::size_t j, std::vector<std::uint32_t>& out) const {
@@ -85,18 +59,17 @@ void Clearance::block(std::size_t i, std::size_t j, std::vector<std::uint32_t>& 
     std::fill(stamp_.begin(), stamp_.end(), 0);
     stamp_now_ = 1;
   }
-  for (std::size_t jj = j == 0 ? 0 : j - 1; jj <= std::min(j + 1, ny_ - 1); ++jj) {
-    for (std::size_t ii = i == 0 ? 0 : i - 1; ii <= std::min(i + 1, nx_ - 1); ++ii) {
-      const std::size_t c = jj * nx_ + ii;
-      for (std::size_t m = start_[c]; m < start_[c + 1]; ++m) {
-        const std::uint32_t k = members_[m];
-        if (stamp_[k] != stamp_now_) {
-          stamp_[k] = stamp_now_;
-          out.push_back(k);
-        }
-      }
-    }
-  }
+  const std::size_t nx = frame_.nx;
+  const std::size_t ny = frame_.ny;
+  frame_.visit_block(i == 0 ? 0 : i - 1, std::min(i + 1, nx - 1), j == 0 ? 0 : j - 1, std::min(j + 1, ny - 1),
+                     [&](std::size_t c) {
+                       members_.visit(c, [&](std::uint32_t k) {
+                         if (stamp_[k] != stamp_now_) {
+                           stamp_[k] = stamp_now_;
+                           out.push_back(k);
+                         }
+                       });
+                     });
 }
 
 double Clearance::disk_distance(Point p, double cap) const {
@@ -104,9 +77,8 @@ double Clearance::disk_distance(Point p, double cap) const {
   const std::size_t cj = row(p.y);
   double best = cap;
   const auto visit = [&](std::size_t i, std::size_t j) {
-    const std::size_t c = j * nx_ + i;
-    for (std::size_t m = start_[c]; m < start_[c + 1]; ++m) {
-      const Disk& d = disks_[members_[m]];
+    for (const std::uint32_t m : members_.items(j * frame_.nx + i)) {
+      const Disk& d = disks_[m];
       const double dx = p.x - d.centre.x;
       const double dy = p.y - d.centre.y;
       const double d2 = dx * dx + dy * dy;
@@ -115,9 +87,9 @@ double Clearance::disk_distance(Point p, double cap) const {
       }
     }
   };
-  const std::size_t reach = std::max(nx_, ny_);
+  const std::size_t reach = std::max(frame_.nx, frame_.ny);
   for (std::size_t k = 0; k <= reach; ++k) {
-    visit_ring(ci, cj, k, nx_, ny_, visit);
+    visit_ring(ci, cj, k, frame_.nx, frame_.ny, visit);
     // A disk listed in no cell of the (2k + 1)-cell block misses the block: its surface is
     // farther than k cells from p.
     if (best <= (static_cast<double>(k) - 1e-6) * side_) {

@@ -22,6 +22,7 @@
 #include <span>
 #include <vector>
 
+#include "common/bucket_grid.hpp"
 #include "domain/edge_distance.hpp"
 #include "frontpack/domain.hpp"
 #include "frontpack/geometry.hpp"
@@ -56,15 +57,15 @@ class Clearance {
   /// every cell its bounding box meets.
   Clearance(const Domain& domain, const DiskImages& images, const EdgeDistanceIndex& edges);
 
-  [[nodiscard]] std::size_t nx() const noexcept { return nx_; }
-  [[nodiscard]] std::size_t ny() const noexcept { return ny_; }
+  [[nodiscard]] std::size_t nx() const noexcept { return frame_.nx; }
+  [[nodiscard]] std::size_t ny() const noexcept { return frame_.ny; }
   [[nodiscard]] double side() const noexcept { return side_; }
   /// The lower left corner of the grid.
-  [[nodiscard]] Point origin() const noexcept { return {x0_, y0_}; }
+  [[nodiscard]] Point origin() const noexcept { return {frame_.x0, frame_.y0}; }
   [[nodiscard]] const Periods& periods() const noexcept { return periods_; }
   /// The grid column and row of a coordinate (clamped to the grid).
-  [[nodiscard]] std::size_t column(double x) const noexcept;
-  [[nodiscard]] std::size_t row(double y) const noexcept;
+  [[nodiscard]] std::size_t column(double x) const noexcept { return frame_.column(x); }
+  [[nodiscard]] std::size_t row(double y) const noexcept { return frame_.row(y); }
   /// The grid cell (i, j) as a square.
   [[nodiscard]] Square cell(std::size_t i, std::size_t j) const noexcept;
 
@@ -89,14 +90,9 @@ class Clearance {
   std::span<const Disk> disks_;
   const EdgeDistanceIndex& edges_;
   double side_ = 1;
-  double inv_side_ = 1;
-  double x0_ = 0;
-  double y0_ = 0;
-  std::size_t nx_ = 1;
-  std::size_t ny_ = 1;
-  std::vector<std::size_t> start_;
-  std::vector<std::uint32_t> members_;
-  mutable std::vector<std::uint32_t> stamp_;  // block(): the last cell each disk was added for
+  GridFrame frame_;                                 // cells of side side_ over the domain's box
+  BucketGrid<std::uint32_t, std::size_t> members_;  // each disk (or image) in every cell its box meets
+  mutable std::vector<std::uint32_t> stamp_;        // block(): the last cell each disk was added for
   mutable std::uint32_t stamp_now_ = 0;
 };
 

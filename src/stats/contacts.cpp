@@ -3,7 +3,7 @@
 #include <cmath>
 #include <cstdint>
 
-#include "common/grid_cells.hpp"
+#include "common/bucket_grid.hpp"
 #include "common/stop.hpp"
 #include "stats/parts.hpp"
 
@@ -48,54 +48,31 @@ void count_contacts(const DiskImages& images, double tol, PackingStats& s, std::
   const double w = b.width() + 2 * (s.sizes.rmax + tol);
   const double ht = b.height() + 2 * (s.sizes.rmax + tol);
   const double h = std::max(h0, std::sqrt(w * ht / (4.0 * static_cast<double>(n) + 16)));
-  const double inv_h = 1 / h;
-  const double x0 = b.xmin - s.sizes.rmax - tol;
-  const double y0 = b.ymin - s.sizes.rmax - tol;
-  const std::size_t nx = axis_cells(w * inv_h, kMaxAxisCells);
-  const std::size_t ny = axis_cells(ht * inv_h, kMaxAxisCells);
+  GridFrame frame;
+  frame.inv_x = frame.inv_y = 1 / h;
+  frame.x0 = b.xmin - s.sizes.rmax - tol;
+  frame.y0 = b.ymin - s.sizes.rmax - tol;
+  frame.nx = axis_cells(w * frame.inv_x, kMaxAxisCells);
+  frame.ny = axis_cells(ht * frame.inv_y, kMaxAxisCells);
   const auto box_of = [tol](const Disk& d) {
     const double e = d.radius + tol / 2;
     return Box{d.centre.x - e, d.centre.y - e, d.centre.x + e, d.centre.y + e};
   };
-  std::vector<std::size_t> start(nx * ny + 1, 0);
-  const auto cells = [&](const Box& bx, auto&& f) {
-    const std::size_t i0 = cell_index(bx.xmin, x0, inv_h, nx);
-    const std::size_t i1 = cell_index(bx.xmax, x0, inv_h, nx);
-    const std::size_t j0 = cell_index(bx.ymin, y0, inv_h, ny);
-    const std::size_t j1 = cell_index(bx.ymax, y0, inv_h, ny);
-    for (std::size_t j = j0; j <= j1; ++j) {
-      for (std::size_t i = i0; i <= i1; ++i) {
-        f(j * nx + i);
-      }
-    }
-  };
-  for (const Disk& d : disks) {
-    cells(box_of(d), [&start](std::size_t c) { ++start[c + 1]; });
-  }
-  for (std::size_t c = 0; c < nx * ny; ++c) {
-    start[c + 1] += start[c];
-  }
-  std::vector<std::uint32_t> members(start.back());
-  {
-    std::vector<std::size_t> fill(start.begin(), start.end() - 1);
-    for (std::size_t k = 0; k < n; ++k) {
-      cells(box_of(disks[k]), [&](std::size_t c) { members[fill[c]++] = static_cast<std::uint32_t>(k); });
-    }
-  }
-  for (std::size_t c = 0; c < nx * ny; ++c) {
+  BucketGrid<std::uint32_t, std::size_t> grid;
+  grid.build_boxes(frame, n, [&](std::size_t k) { return box_of(disks[k]); });
+  for (std::size_t c = 0; c < frame.cells(); ++c) {
     detail::throw_if_stopped(stop, c);
-    for (std::size_t p = start[c]; p < start[c + 1]; ++p) {
+    const std::span<const std::uint32_t> members = grid.items(c);
+    for (std::size_t p = 0; p < members.size(); ++p) {
       const Disk& a = disks[members[p]];
       const Box ba = box_of(a);
-      for (std::size_t q = p + 1; q < start[c + 1]; ++q) {
+      for (std::size_t q = p + 1; q < members.size(); ++q) {
         const Disk& d = disks[members[q]];
         const Box bd = box_of(d);
         if (ba.xmax < bd.xmin || bd.xmax < ba.xmin || ba.ymax < bd.ymin || bd.ymax < ba.ymin) {
           continue;
         }
-        const std::size_t owner = cell_index(std::max(ba.ymin, bd.ymin), y0, inv_h, ny) * nx +
-                                  cell_index(std::max(ba.xmin, bd.xmin), x0, inv_h, nx);
-        if (owner != c) {
+        if (frame.cell_of({std::max(ba.xmin, bd.xmin), std::max(ba.ymin, bd.ymin)}) != c) {
           continue;
         }
         const std::size_t ka = members[p];

@@ -10,11 +10,16 @@
 #include <tuple>
 #include <vector>
 
+#include "common/bucket_grid.hpp"
+
 namespace frontpack::detail {
 
 namespace {
 
-// The grid over the centres: cell (i, j) holds the indices of the disks whose centre lies in it.
+// The grid over the centres: cell (i, j) lists the indices of the disks whose centre lies in it.
+// Its cell index divides by the side, where GridFrame (common/bucket_grid.hpp) multiplies by the
+// reciprocal: the two round differently for a centre on a cell's edge, and the order in which the
+// neighbours' areas are summed, so the thinning's result, would change.
 class CentreGrid {
  public:
   CentreGrid(const std::vector<Disk>& disks, double side) : side_(side) {
@@ -23,18 +28,7 @@ class CentreGrid {
     }
     nx_ = cells_along(box_.width());
     ny_ = cells_along(box_.height());
-    start_.assign(nx_ * ny_ + 1, 0);
-    for (const Disk& d : disks) {
-      ++start_[cell(d.centre) + 1];
-    }
-    for (std::size_t k = 1; k < start_.size(); ++k) {
-      start_[k] += start_[k - 1];
-    }
-    items_.resize(disks.size());
-    std::vector<std::size_t> fill(start_.begin(), start_.end() - 1);
-    for (std::size_t i = 0; i < disks.size(); ++i) {
-      items_[fill[cell(disks[i].centre)]++] = i;
-    }
+    grid_.build(nx_ * ny_, disks.size(), [&](std::size_t i, auto&& emit) { emit(cell(disks[i].centre)); });
   }
 
   // Calls f(j) for every disk j whose centre may lie within `side` of p (the 3 x 3 cells around).
@@ -44,10 +38,7 @@ class CentreGrid {
     const std::size_t cj = index(p.y, box_.ymin, ny_);
     for (std::size_t j = cj == 0 ? 0 : cj - 1; j <= std::min(cj + 1, ny_ - 1); ++j) {
       for (std::size_t i = ci == 0 ? 0 : ci - 1; i <= std::min(ci + 1, nx_ - 1); ++i) {
-        const std::size_t c = j * nx_ + i;
-        for (std::size_t k = start_[c]; k < start_[c + 1]; ++k) {
-          f(items_[k]);
-        }
+        grid_.visit(j * nx_ + i, f);
       }
     }
   }
@@ -67,8 +58,7 @@ class CentreGrid {
   Box box_;
   std::size_t nx_ = 1;
   std::size_t ny_ = 1;
-  std::vector<std::size_t> start_;
-  std::vector<std::size_t> items_;
+  BucketGrid<std::size_t, std::size_t> grid_;
 };
 
 // The share of the disk of radius `reach` about c that lies in the domain, at 24 points (three

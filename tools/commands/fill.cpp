@@ -393,11 +393,9 @@ Command add_fill(CLI::App& app) {
   cmd->add_option("--seed", args->seed, "64-bit seed, 0 to 18446744073709551615 (same seed, same packing)")
       ->capture_default_str();
   cmd->add_option("-o,--output", args->outputs,
-                  "output file, any number; format by extension: .csv, .txt/.yade (Yade), .data/.lmp (LAMMPS), "
-                  ".vtp (ParaView), .png/.svg/.pdf (picture)");
+                  "output file, any number; format by extension: " + frontpack_tool::extensions_help(false));
   cmd->add_option("--format", args->format,
-                  "format of every -o instead of the extension: csv, yade, lammps, "
-                  "vtp, png, svg, pdf");
+                  "format of every -o instead of the extension: " + frontpack_tool::format_names_help(false));
   cmd->add_option("--json", args->json, "write the summary as JSON to this file");
   cmd->add_option("--types", args->types,
                   "per-disk types (1-based) for every output: size:E1,E2,... (radius bin edges: r < E1 is type 1, "

@@ -88,8 +88,9 @@ Command add_render(CLI::App& app) {
   auto args = std::make_shared<RenderArgs>();
   CLI::App* cmd = app.add_subcommand("render", "Draw a packing: PNG, SVG or PDF, disks coloured by radius");
   add_packing_inputs(*cmd, args->in);
-  cmd->add_option("-o,--output", args->outputs, "picture file(s): .png, .svg or .pdf")->required();
-  cmd->add_option("--format", args->format, "png, svg or pdf instead of the extension");
+  cmd->add_option("-o,--output", args->outputs, "picture file(s): " + frontpack_tool::extensions_help(true))
+      ->required();
+  cmd->add_option("--format", args->format, frontpack_tool::format_names_help(true) + " instead of the extension");
   cmd->add_option("--width", args->width, "width in pixels (height: the domain's, plus the histogram)")
       ->capture_default_str();
   cmd->add_option("--radius", args->radius,
