@@ -9,6 +9,7 @@
 #include <stop_token>
 
 #include "frontpack/fill.hpp"
+#include "options/clearance.hpp"
 
 namespace frontpack::detail {
 
@@ -24,11 +25,6 @@ struct RunBudget {
 /// `generation_cap` disks, and is estimated so.
 [[nodiscard]] RunBudget check_limits(const Domain& domain, const FillOptions& options, const RadiusDistribution& radii,
                                      std::size_t generation_cap);
-
-/// The clearance tangent disks keep (FillOptions::clearance, or a few ulps of the largest
-/// coordinate a disk can have if 0). Throws OptionError for a clearance below that, or a domain
-/// and radii too small for one.
-[[nodiscard]] double clearance_for(const Domain& domain, const FillOptions& options);
 
 /// Throws NothingFitsError naming why the fill of `domain` with `options` gave `packing` no disk:
 /// a fraction or a level that keeps none, radii larger than the domain holds, a start point
