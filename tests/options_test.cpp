@@ -51,9 +51,10 @@ TEST(OptionsTest, EveryOptionIsDescribedOnceWithHelpAndAccessors) {
     EXPECT_NE(info.set, nullptr) << info.name;
     EXPECT_FALSE(fp::expected_text(info).empty()) << info.name;
   }
-  // FillOptions has 14 fields; `stop` is not a user option.
-  EXPECT_EQ(names.size(), 13u);
+  // Every FillOptions field but `stop` (not a user option): fill_options.cpp counts the fields.
+  EXPECT_EQ(names.size(), fp::fill_option_list().size());
   EXPECT_EQ(names.count("stop"), 0u);
+  EXPECT_EQ(names.count("radius"), 1u);
   EXPECT_THROW((void)fp::fill_option("stop"), fp::OptionError);
 }
 

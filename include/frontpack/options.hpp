@@ -126,6 +126,10 @@ namespace option_text {
 /// message "expected a whole number from MIN to MAX".
 [[nodiscard]] std::uint64_t parse_count(std::string_view option, std::string_view text, std::uint64_t max,
                                         std::uint64_t min = 0);
+/// What parse_bytes() reads, as its message says it.
+inline constexpr std::string_view bytes_expected =
+    "a number of bytes, with an optional suffix K, M, G or T (powers of 1024), e.g. 512M or 2G; 0 for three "
+    "quarters of the machine's memory";
 /// Bytes: a whole number with an optional suffix K, M, G or T (powers of 1024: 512M, 2G).
 [[nodiscard]] std::size_t parse_bytes(std::string_view option, std::string_view text);
 /// text as a finite number, read exactly as std::from_chars reads it (no locale, correctly

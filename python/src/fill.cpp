@@ -202,6 +202,29 @@ PyPacking run(const Domain& domain, FillOptions options, const py::object& progr
                    target_dict(packing.target)};
 }
 
+// fill_options() and _fill(): the options by the names of their description.
+void bind_fill_call(py::module_& m) {
+  m.def("fill_options", &fill_options_list,
+        "The fill options' one description (frontpack/options.hpp), in FillOptions' order: a list of dicts "
+        "with name (the keyword of fill), kind, default, default_text (as the tool shows it), flag (the frontpack fill "
+        "flag), expected and help.");
+
+  m.def(
+      "_fill",
+      [](const Domain& domain, const py::handle& radius, const py::object& progress, const py::object& stop,
+         const py::kwargs& options) {
+        FillOptions o;
+        o.radii = radii_from(radius);
+        for (const auto& [key, value] : options) {
+          const OptionInfo& info = fill_option(key.cast<std::string>());
+          set_option(o, info, option_value(info, value));
+        }
+        return run(domain, std::move(o), progress, stop);
+      },
+      py::arg("domain"), py::arg("radius"), py::arg("progress"), py::arg("stop"),
+      "fill() without the shape conversion and the progress bar; the options by their names (fill_options()).");
+}
+
 }  // namespace
 
 void bind_fill(py::module_& m) {
@@ -260,25 +283,7 @@ void bind_fill(py::module_& m) {
                " culled, " + std::to_string(p.certificate.dropped) + " dropped)>";
       });
 
-  m.def("fill_options", &fill_options_list,
-        "The fill options' one description (frontpack/options.hpp), in FillOptions' order: a list of dicts "
-        "with name (the keyword of fill), kind, default, default_text (as the tool shows it), flag (the frontpack fill "
-        "flag), expected and help.");
-
-  m.def(
-      "_fill",
-      [](const Domain& domain, const py::handle& radius, const py::object& progress, const py::object& stop,
-         const py::kwargs& options) {
-        FillOptions o;
-        o.radii = radii_from(radius);
-        for (const auto& [key, value] : options) {
-          const OptionInfo& info = fill_option(key.cast<std::string>());
-          set_option(o, info, option_value(info, value));
-        }
-        return run(domain, std::move(o), progress, stop);
-      },
-      py::arg("domain"), py::arg("radius"), py::arg("progress"), py::arg("stop"),
-      "fill() without the shape conversion and the progress bar; the options by their names (fill_options()).");
+  bind_fill_call(m);
 
   // For bench/python_overhead.py: frontpack::fill alone (no callback), timed in C++.
   m.def(

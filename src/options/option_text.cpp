@@ -60,9 +60,7 @@ std::size_t parse_bytes(std::string_view option, std::string_view text) {
     shift = u == std::string::npos ? -1 : 10 * static_cast<int>(u + 1);
   }
   if (digits == 0 || shift < 0) {
-    throw OptionError(given_value(option, text) +
-                      ": expected a number of bytes, with an optional suffix K, M, G or T (powers of "
-                      "1024), e.g. 512M or 2G; 0 for three quarters of the machine's memory");
+    throw OptionError(given_value(option, text) + ": expected " + std::string(bytes_expected));
   }
   std::uint64_t value = 0;
   const auto [end, ec] = std::from_chars(text.data(), text.data() + digits, value);

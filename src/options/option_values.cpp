@@ -67,9 +67,7 @@ std::string expected_text(const OptionInfo& info) {
     case OptionKind::radii: return "a radius spec, e.g. " + std::string(default_radius_spec);
     case OptionKind::count:
       return "a whole number from " + std::to_string(info.count_min) + " to " + std::to_string(info.count_max);
-    case OptionKind::bytes:
-      return "a number of bytes, with an optional suffix K, M, G or T (powers of 1024), e.g. 512M or 2G; 0 for three "
-             "quarters of the machine's memory";
+    case OptionKind::bytes: return std::string(option_text::bytes_expected);
     case OptionKind::real:
       if (info.real_min == OptionInfo{}.real_min && info.real_max == OptionInfo{}.real_max) {
         return "a finite number, e.g. 0.5 or -2e-3";
