@@ -421,12 +421,12 @@ frontpack_tool_test(fill_no_voids_boundary 5 "boundary method keeps its voids" f
 set(O ${TOOL_OUT}/fill_start)
 frontpack_tool_check(fill_start 0 "closed form" FILES ${O}/p.csv FILE_MATCHES ${O}/p.csv "^x,y,r\n0\\.25,0\\.75,0\\.01\n0\\.270000000001,0\\.75,"
   ARGS fill ${SQ} --method closed --radius constant:0.01 --start 0.25,0.75 --clearance 1e-12 -o ${O}/p.csv)
-frontpack_tool_test(fill_start_not_closed 5 "--start is where the closed form .* the boundary form has no start point"
+frontpack_tool_test(fill_start_not_closed 5 "start \\(--start\\) is where the closed form .* the boundary form has no start point"
   fill ${SQ} --start 0.5,0.5)
 frontpack_tool_test(fill_start_bad 5 "--start '0.5': expected two numbers X,Y" fill ${SQ} --method closed --start 0.5)
 frontpack_tool_test(fill_start_bad_number 5 "--start '0.5,abc': 'abc' is not a finite number; expected two numbers X,Y"
   fill ${SQ} --method closed --start 0.5,abc)
-frontpack_tool_test(fill_start_many_polygons 5 "--start: the domain has 4 polygons"
+frontpack_tool_test(fill_start_many_polygons 5 "start \\(--start\\): the domain has 4 polygons"
   fill ${S}/islands.wkt --method closed --start 0.5,0.5)
 frontpack_tool_test(fill_clearance_bad 5 "--clearance '-1': expected a gap > 0" fill ${SQ} --clearance -1)
 frontpack_tool_test(fill_clearance_tiny 5 "clearance must be 0 \\(automatic\\) or a finite number >= [0-9.e-]+ for this domain and radius range, got 1e-300"
@@ -509,7 +509,7 @@ frontpack_tool_test(fill_fraction 0 "target: +fraction 0\\.7000 asked, 0\\.(69[8
   fill ${S}/plate_with_holes.wkt --radius uniform:0.004,0.04 --fraction 0.7)
 frontpack_tool_test(fill_fraction_too_high 5 "fraction 0\\.95: the boundary method reaches 0\\.8[0-9]+ for uniform: radius in \\[0\\.004, 0\\.04\\] in this domain"
   fill ${S}/plate_with_holes.wkt --radius uniform:0.004,0.04 --fraction 0.95)
-frontpack_tool_test(fill_fraction_range 5 "fraction 1\\.5: a packing fraction \\(disk area / domain area\\) must lie strictly between 0 and 1"
+frontpack_tool_test(fill_fraction_range 5 "--fraction .1\\.5.: expected a packing fraction \\(disk area / domain area\\) strictly between 0 and 1"
   fill ${S}/plate_with_holes.wkt --fraction 1.5)
 frontpack_tool_test(fill_count_open 0 "disks: +500 \\(open form.*target: +count 500 asked"
   fill ${S}/plate_with_holes.wkt --method open --radius uniform:0.01,0.02 --count 500)

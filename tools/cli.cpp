@@ -32,14 +32,11 @@ void add_domain_source_options(CLI::App& cmd, DomainSource& src) {
   cmd.add_option("--max-deviation", src.max_deviation,
                  "largest distance between a DXF curve and the polyline that replaces it, on the domain's side "
                  "(default: rmin/10 in fill, else 1e-3 of each curve's radius)");
-  cmd.add_option("--max-disks", src.max_count,
-                 "the most items of each kind the command may make (disks, wall disks, curve segments, sample "
-                 "points): refused up front when estimated beyond; fill stops a run that reaches it (exit 9)")
-      ->capture_default_str();
-  cmd.add_option("--memory-limit", src.memory_limit,
-                 "bytes the command may take, e.g. 512M or 2G (K, M, G, T: powers of 1024); refused up front or "
-                 "stopped before it would take more (exit 5); 0: three quarters of the machine's memory")
-      ->capture_default_str();
+  for (const frontpack::OptionInfo& info : frontpack::fill_option_list()) {
+    if (info.budget) {
+      cmd.add_option(frontpack::flag_name(info), src.budget_text[std::string(info.name)], option_help(info));
+    }
+  }
 }
 
 void add_domain_options(CLI::App& cmd, DomainSource& src) {
@@ -95,8 +92,14 @@ frontpack::Domain load(const DomainSource& src) {
 }
 
 frontpack::Budget budget(const DomainSource& src) {
-  return {.max_count = parse_count("--max-disks", src.max_count, std::numeric_limits<std::uint64_t>::max()),
-          .memory_limit = parse_bytes("--memory-limit", src.memory_limit)};
+  frontpack::FillOptions options;
+  for (const auto& [name, text] : src.budget_text) {
+    const frontpack::OptionInfo& info = frontpack::fill_option(name);
+    if (!text.empty()) {
+      frontpack::set_option(options, info, frontpack::parse_option(info, text, frontpack::flag_name(info)));
+    }
+  }
+  return {.max_count = options.max_disks, .memory_limit = options.memory_limit};
 }
 
 frontpack::DomainFile load_file(const DomainSource& src, double default_deviation) {
@@ -158,6 +161,10 @@ void refuse_empty_values(const CLI::App& command) {
       }
     }
   }
+}
+
+std::string option_help(const frontpack::OptionInfo& info) {
+  return std::string(info.help) + " (default " + frontpack::default_text(info) + ")";
 }
 
 int exit_code(const std::exception& e) {

@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <exception>
 #include <functional>
+#include <map>
 #include <stop_token>
 #include <string>
 #include <vector>
@@ -57,9 +58,10 @@ struct DomainSource {
   std::string max_deviation;         // --max-deviation: "" for the command's default
   std::string periodic;              // --periodic LX,LY | XMIN,YMIN,XMAX,YMAX
   std::string periodic_axes = "xy";  // --periodic-axes xy | x
-  // --max-disks, --memory-limit: the Budget (frontpack/budget.hpp) every count is held to
-  std::string max_count = std::to_string(frontpack::Budget{}.max_count);
-  std::string memory_limit = "0";
+  // --max-disks, --memory-limit: the Budget (frontpack/budget.hpp) every count is held to; the
+  // text given for each fill option that is also the Budget (OptionInfo::budget), by name ("" if
+  // not given: the description's default)
+  std::map<std::string, std::string, std::less<>> budget_text;
   CLI::Option* wkt_option = nullptr;
   CLI::Option* periodic_option = nullptr;
   [[nodiscard]] bool from_text() const { return wkt_option != nullptr && wkt_option->count() > 0; }
@@ -107,6 +109,9 @@ void add_curve_input(const std::string& spec, std::vector<FileUse>& inputs);
 /// Refuses (OptionError) an option or argument of `command` given an empty value: '--clearance ""'
 /// would otherwise read as an option not given. Flags take no value and are not checked.
 void refuse_empty_values(const CLI::App& command);
+
+/// A fill option's help: its description's sentence and default (frontpack/options.hpp).
+[[nodiscard]] std::string option_help(const frontpack::OptionInfo& info);
 
 /// One exit code per kind of error (see the top of tools/frontpack.cpp).
 [[nodiscard]] int exit_code(const std::exception& e);

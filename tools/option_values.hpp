@@ -1,37 +1,18 @@
-// The values of the tool's options read from their text: whole numbers, finite numbers, lists of
-// them; each refused with an OptionError "OPTION 'TEXT': expected ..." that names the option and
-// the value given (cut as given_value() cuts it).
+// The values of the tool's options read from their text: the library's readers
+// (frontpack/options.hpp, namespace option_text), so that the fill options and the tool's own
+// options are refused with one kind of message, "OPTION 'TEXT': expected ...".
 #pragma once
 
-#include <cstddef>
-#include <cstdint>
-#include <optional>
-#include <string>
-#include <string_view>
-#include <vector>
+#include "frontpack/options.hpp"
 
 namespace frontpack_tool::cli {
 
-/// "OPTION 'TEXT'", TEXT cut to 80 characters: how an error message names an option's value.
-[[nodiscard]] std::string given_value(std::string_view option, std::string_view text);
-/// A whole number in [min, max]: digits only (no sign, no exponent, no fraction), so that "-1" or
-/// "1e23" is refused rather than wrapped or truncated; every value out of range gets the one
-/// message "expected a whole number from MIN to MAX".
-[[nodiscard]] std::uint64_t parse_count(std::string_view option, const std::string& text, std::uint64_t max,
-                                        std::uint64_t min = 0);
-/// Bytes: a whole number with an optional suffix K, M, G or T (powers of 1024: 512M, 2G).
-[[nodiscard]] std::size_t parse_bytes(std::string_view option, const std::string& text);
-/// text as a finite number, read exactly as std::from_chars reads it (no locale, correctly
-/// rounded), if it is one (all of it).
-[[nodiscard]] std::optional<double> finite_number(std::string_view text);
-/// A finite number (finite_number()).
-[[nodiscard]] double parse_double(std::string_view option, std::string_view text);
-/// A finite number > 0.
-[[nodiscard]] double parse_positive(std::string_view option, std::string_view text);
-/// The comma-separated numbers of an option's value, each as parse_double() reads it; an item that
-/// is not one (an empty item included) is refused as "OPTION 'TEXT': 'ITEM' is not a finite
-/// number; expected EXPECTED".
-[[nodiscard]] std::vector<double> finite_numbers(std::string_view option, const std::string& text,
-                                                 std::string_view expected);
+using frontpack::option_text::finite_number;
+using frontpack::option_text::finite_numbers;
+using frontpack::option_text::given_value;
+using frontpack::option_text::parse_bytes;
+using frontpack::option_text::parse_count;
+using frontpack::option_text::parse_double;
+using frontpack::option_text::parse_positive;
 
 }  // namespace frontpack_tool::cli

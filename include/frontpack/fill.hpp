@@ -18,6 +18,7 @@
 #include <stop_token>
 #include <vector>
 
+#include "frontpack/budget.hpp"
 #include "frontpack/certify.hpp"
 #include "frontpack/domain.hpp"
 #include "frontpack/errors.hpp"
@@ -42,7 +43,10 @@ enum class Method : std::uint8_t {
 /// when given no --radius.
 inline constexpr const char* default_radius_spec = "uniform:0.01,0.05";
 
-/// The defaults are the tool's: `frontpack fill DOMAIN` runs fill(domain, FillOptions{}).
+/// The defaults are the tool's: `frontpack fill DOMAIN` runs fill(domain, FillOptions{}). Each
+/// field but `stop` is described once (name, kind, range, help) in frontpack/options.hpp, from
+/// which the tool's flags and Python's keywords are made; check_options() there checks them all,
+/// and fill() calls it.
 struct FillOptions {
   Method method = Method::boundary;
   Radii radii = Radii::uniform(0.01, 0.05);
@@ -52,7 +56,8 @@ struct FillOptions {
   /// disk are still found (by a grid over all placed disks) and never emitted.
   std::size_t window = 5;
   /// Closed form: where the first three disks are placed (default: the centre of each
-  /// polygon's bounding box).
+  /// polygon's bounding box). Only with the closed form and a domain of one polygon, inside the
+  /// cell if periodic (else OptionError).
   std::optional<Point> start;
   /// Tangent disks are placed at centre distance r1 + r2 + clearance. 0 (the default) means
   /// automatic: 64 * 2^-52 * (largest |coordinate| + 5 rmax), a few ulps of the coordinates, so
@@ -71,7 +76,7 @@ struct FillOptions {
   /// Refuse requests whose estimated disk count exceeds this (LimitError), and stop a run that
   /// reaches it (Packing::truncated); 0: no count limit. With memory_limit, the fill's Budget
   /// (frontpack/budget.hpp).
-  std::size_t max_disks = 50'000'000;
+  std::size_t max_disks = Budget{}.max_count;
   /// The memory a run may take, in bytes, so that it is never killed by the operating system
   /// half-way: a request whose estimated disks take more (peak_bytes_per_disk each) is refused up
   /// front, and a run whose grids plus peak_bytes_per_disk per disk generated so far would take

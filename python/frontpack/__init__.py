@@ -12,6 +12,7 @@ their doubles, and every writer writes them in shortest round-trip form.
 """
 
 import functools as _functools
+import inspect as _inspect
 
 from . import _core, _progress, _shapes
 from ._core import (  # noqa: F401  (the public names)
@@ -47,47 +48,34 @@ Domain.from_shape = staticmethod(_shapes.as_domain)
 Domain.__geo_interface__ = property(_shapes.geo_interface)
 
 
-def fill(
-    domain,
-    radius=default_radius_spec,
-    *,
-    method="boundary",
-    seed=0,
-    window=5,
-    start=None,
-    clearance=0.0,
-    fill_voids=True,
-    max_disks=50_000_000,
-    memory_limit=0,
-    fraction=None,
-    count=0,
-    height=None,
-    jam=False,
-    progress=None,
-    stop=None,
-):
-    """Fills `domain` with disks; returns a Packing whose `disks` are certified exactly.
+# The fill options, described once in the library (frontpack/options.hpp): fill's keywords, their
+# defaults and the docstring's option paragraph are made from this list.
+_FILL_OPTIONS = _core.fill_options()
+# `radius`, the one option also given by position (after the domain).
+_POSITIONAL_OPTION = "radius"
 
-    The defaults are the tool's (`frontpack fill DOMAIN`). `radius`: a Radii, a radius spec
-    ("uniform:0.01,0.05", "curve:sand.csv", ...) or a number (every radius the same). `method`:
-    "boundary" (against the domain's own edges), "closed" or "open" (the paper's forms). The same
-    inputs and seed give bit-identical disks. `window`: front check window M (0: the whole
-    front). `start`: the closed form's first disks, (x, y). `clearance`: 0 is automatic (a few
-    ulps of the coordinates); a value given must be at least 16 * 2^-52 * (largest |coordinate| +
-    5 rmax). `fill_voids=False`: the paper's forms as published (the boundary method refuses it).
-    `max_disks`, `memory_limit` (bytes; 0: three quarters of the machine's memory): requests
-    beyond them raise LimitError up front; a run reaching max_disks stops (Packing.truncated).
 
-    Targets (Packing.target reports what was achieved): `fraction`, a packing fraction F in
-    (0, 1) reached within 0.002 with the requested radii exactly (a looser fill shrunk back and
-    thinned; no contacts; two or three fills; docs/fraction.md); `count`, exactly this many disks
-    in a compact region (closed and open forms); `height`, only the part below y = height is
-    filled (every disk has y + r <= height).
+def _fill_signature():
+    p = _inspect.Parameter
+    by_position = [o for o in _FILL_OPTIONS if o["name"] == _POSITIONAL_OPTION]
+    by_keyword = [o for o in _FILL_OPTIONS if o["name"] != _POSITIONAL_OPTION]
+    return _inspect.Signature(
+        [p("domain", p.POSITIONAL_OR_KEYWORD)]
+        + [p(o["name"], p.POSITIONAL_OR_KEYWORD, default=o["default"]) for o in by_position]
+        + [p(o["name"], p.KEYWORD_ONLY, default=o["default"]) for o in by_keyword]
+        + [p("progress", p.KEYWORD_ONLY, default=None), p("stop", p.KEYWORD_ONLY, default=None)]
+    )
 
-    `jam=True`: after the front, disks are inserted and the overlaps relaxed away until the
-    packing jams (denser at narrow size ranges: bidisperse 1:1.4 about 0.837 instead of 0.815;
-    little change at wide ones; not with fraction or count; docs/jam.md). Progress phase "jam".
 
+_FILL_DOC_HEAD = """Fills `domain` with disks; returns a Packing whose `disks` are certified exactly.
+
+    The defaults are the tool's (`frontpack fill DOMAIN`); the same inputs and seed give
+    bit-identical disks. `radius` may also be a Radii or a number (every radius the same).
+
+    Options (keyword, default: what it does; the `frontpack fill` flag):
+"""
+
+_FILL_DOC_TAIL = """
     `progress`: a callable taking a Progress, called about every 16384 disks and at each phase
     (returning False stops generating: the packing of what was generated, certified, with
     Packing.cancelled), or True for a bar (tqdm when importable). The GIL is released while the
@@ -95,17 +83,35 @@ def fill(
     KeyboardInterrupt; an exception raised by the callback cancels it and is raised again.
     `stop`: a StopSource another thread may request (CancelledError).
 
-    Raises OptionError, LimitError, NothingFitsError (no disk placed: the message says why), CancelledError.
+    Raises OptionError (every option checked as the tool checks it: check_options), LimitError,
+    NothingFitsError (no disk placed: the message says why), CancelledError.
     """
-    d = _shapes.as_domain(domain)
-    callback, close = _progress.callback(progress)
+
+
+def _fill_doc():
+    lines = [
+        "    `%s` (default %r): %s (%s)." % (o["name"], o["default"], o["help"], o["flag"]) for o in _FILL_OPTIONS
+    ]
+    return _FILL_DOC_HEAD + "\n".join(lines) + "\n" + _FILL_DOC_TAIL
+
+
+def fill(*args, **kwargs):
+    bound = _FILL_SIGNATURE.bind(*args, **kwargs)
+    bound.apply_defaults()
+    options = dict(bound.arguments)
+    d = _shapes.as_domain(options.pop("domain"))
+    radius = options.pop(_POSITIONAL_OPTION)
+    callback, close = _progress.callback(options.pop("progress"))
+    stop = options.pop("stop")
     try:
-        return _core._fill(
-            d, radius, method, seed, window, start, clearance, fill_voids, max_disks, memory_limit, fraction, count,
-            height, jam, callback, stop,
-        )
+        return _core._fill(d, radius, callback, stop, **options)
     finally:
         close()
+
+
+_FILL_SIGNATURE = _fill_signature()
+fill.__signature__ = _FILL_SIGNATURE
+fill.__doc__ = _fill_doc()
 
 
 def _takes_domain(function):

@@ -190,7 +190,7 @@ class Packing:
 
 def fill(
     domain: Shape,
-    radius: Union[Radii, str, float] = ...,
+    radius: Union[Radii, str, float] = "uniform:0.01,0.05",
     *,
     method: Literal["boundary", "closed", "open"] = "boundary",
     seed: int = 0,

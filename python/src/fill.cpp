@@ -61,15 +61,6 @@ struct StopSource {
   std::stop_source source;
 };
 
-Method method_from(const std::string& name) {
-  for (const Method method : {Method::closed, Method::open, Method::boundary}) {
-    if (name == to_string(method)) {
-      return method;
-    }
-  }
-  throw OptionError("method '" + name + "': expected 'boundary', 'closed' or 'open'");
-}
-
 Radii radii_from(const py::handle& radius) {
   if (py::isinstance<Radii>(radius)) {
     return radius.cast<Radii>();
@@ -81,6 +72,72 @@ Radii radii_from(const py::handle& radius) {
     return Radii::constant(radius.cast<double>());
   }
   throw py::type_error("radius must be a Radii, a radius spec string or a number (a constant radius)");
+}
+
+// A Python value as the option's value, by its kind; range checks are check_options()'s (fill
+// calls it). None gives none (refused by set_option for an option that is not optional).
+OptionValue option_value(const OptionInfo& info, const py::handle& value) {
+  if (value.is_none()) {
+    return std::monostate{};
+  }
+  const std::string name(info.name);
+  try {
+    switch (info.kind) {
+      case OptionKind::method: return parse_method(value.cast<std::string>(), name);
+      case OptionKind::radii: return radii_from(value);
+      case OptionKind::count:
+      case OptionKind::bytes:
+        if (py::isinstance<py::int_>(value) &&
+            (value.attr("__lt__")(0).cast<bool>() || value.attr("__gt__")(py::int_(UINT64_MAX)).cast<bool>())) {
+          throw OptionError(name + " " + py::repr(value).cast<std::string>() + ": expected " + expected_text(info));
+        }
+        return value.cast<std::uint64_t>();
+      case OptionKind::real: return value.cast<double>();
+      case OptionKind::point: {
+        const auto xy = value.cast<std::pair<double, double>>();
+        return Point{xy.first, xy.second};
+      }
+      case OptionKind::flag: return value.cast<bool>();
+    }
+  } catch (const py::cast_error&) {
+    throw py::type_error(name + " must be " + expected_text(info) + ", not " +
+                         py::str(py::type::of(value).attr("__name__")).cast<std::string>());
+  }
+  return std::monostate{};
+}
+
+// The default of an option as a Python value: None for none, the radius spec for the radii.
+py::object default_object(const OptionInfo& info) {
+  const OptionValue value = default_value(info);
+  if (std::holds_alternative<std::monostate>(value)) {
+    return py::none();
+  }
+  switch (info.kind) {
+    case OptionKind::method:
+    case OptionKind::radii: return py::str(default_text(info));
+    case OptionKind::count:
+    case OptionKind::bytes: return py::int_(std::get<std::uint64_t>(value));
+    case OptionKind::real: return py::float_(std::get<double>(value));
+    case OptionKind::point: return py::make_tuple(std::get<Point>(value).x, std::get<Point>(value).y);
+    case OptionKind::flag: return py::bool_(std::get<bool>(value));
+  }
+  return py::none();
+}
+
+py::list fill_options_list() {
+  py::list out;
+  for (const OptionInfo& info : fill_option_list()) {
+    py::dict d;
+    d["name"] = std::string(info.name);
+    d["kind"] = to_string(info.kind);
+    d["default"] = default_object(info);
+    d["default_text"] = default_text(info);
+    d["flag"] = flag_name(info);
+    d["expected"] = expected_text(info);
+    d["help"] = std::string(info.help);
+    out.append(d);
+  }
+  return out;
 }
 
 // Adds a note (Python 3.11+) to the exception that cancelled a run, for the traceback and for tests
@@ -145,6 +202,29 @@ PyPacking run(const Domain& domain, FillOptions options, const py::object& progr
                    target_dict(packing.target)};
 }
 
+// fill_options() and _fill(): the options by the names of their description.
+void bind_fill_call(py::module_& m) {
+  m.def("fill_options", &fill_options_list,
+        "The fill options' one description (frontpack/options.hpp), in FillOptions' order: a list of dicts "
+        "with name (the keyword of fill), kind, default, default_text (as the tool shows it), flag (the frontpack fill "
+        "flag), expected and help.");
+
+  m.def(
+      "_fill",
+      [](const Domain& domain, const py::handle& radius, const py::object& progress, const py::object& stop,
+         const py::kwargs& options) {
+        FillOptions o;
+        o.radii = radii_from(radius);
+        for (const auto& [key, value] : options) {
+          const OptionInfo& info = fill_option(key.cast<std::string>());
+          set_option(o, info, option_value(info, value));
+        }
+        return run(domain, std::move(o), progress, stop);
+      },
+      py::arg("domain"), py::arg("radius"), py::arg("progress"), py::arg("stop"),
+      "fill() without the shape conversion and the progress bar; the options by their names (fill_options()).");
+}
+
 }  // namespace
 
 void bind_fill(py::module_& m) {
@@ -203,41 +283,14 @@ void bind_fill(py::module_& m) {
                " culled, " + std::to_string(p.certificate.dropped) + " dropped)>";
       });
 
-  m.def(
-      "_fill",
-      [](const Domain& domain, const py::handle& radius, const std::string& method, std::uint64_t seed,
-         std::size_t window, const std::optional<std::pair<double, double>>& start, double clearance, bool fill_voids,
-         std::size_t max_disks, std::size_t memory_limit, std::optional<double> fraction, std::size_t count,
-         std::optional<double> height, bool jam, const py::object& progress, const py::object& stop) {
-        FillOptions o;
-        o.method = method_from(method);
-        o.radii = radii_from(radius);
-        o.seed = seed;
-        o.window = window;
-        if (start) {
-          o.start = Point{start->first, start->second};
-        }
-        o.clearance = clearance;
-        o.fill_voids = fill_voids;
-        o.max_disks = max_disks;
-        o.memory_limit = memory_limit;
-        o.fraction = fraction;
-        o.count = count;
-        o.height = height;
-        o.jam = jam;
-        return run(domain, std::move(o), progress, stop);
-      },
-      py::arg("domain"), py::arg("radius"), py::arg("method"), py::arg("seed"), py::arg("window"), py::arg("start"),
-      py::arg("clearance"), py::arg("fill_voids"), py::arg("max_disks"), py::arg("memory_limit"), py::arg("fraction"),
-      py::arg("count"), py::arg("height"), py::arg("jam"), py::arg("progress"), py::arg("stop"),
-      "fill() without the shape conversion and the progress bar.");
+  bind_fill_call(m);
 
   // For bench/python_overhead.py: frontpack::fill alone (no callback), timed in C++.
   m.def(
       "_time_cpp_fill",
       [](const Domain& domain, const Radii& radii, std::uint64_t seed, const std::string& method) {
         FillOptions o;
-        o.method = method_from(method);
+        o.method = parse_method(method);
         o.radii = radii;
         o.seed = seed;
         o.max_disks = 200'000'000;

@@ -8,12 +8,12 @@
 #include <string>
 
 #include "certify/certify.hpp"
-#include "common/format.hpp"
 #include "common/rng.hpp"
 #include "common/stop.hpp"
 #include "fill/limits.hpp"
 #include "fill/progress_meter.hpp"
 #include "frontpack/fill.hpp"
+#include "frontpack/options.hpp"
 #include "generate/boundary/boundary_front.hpp"
 #include "generate/paper_front.hpp"
 #include "generate/run_control.hpp"
@@ -25,71 +25,15 @@ namespace frontpack {
 
 namespace {
 
-// A periodic cell: the boundary method and the closed form wrap around it (the open form, which
-// grows from the bottom of a box with walls, does not).
-void check_periodic(const Domain& domain, const FillOptions& o, double clearance) {
-  if (domain.periodicity() == Periodicity::none) {
-    return;
-  }
-  if (o.method == Method::open) {
-    throw OptionError(
-        "a periodic cell is filled by the boundary method or the closed form; the open form does not wrap around a "
-        "cell");
-  }
-  // Each front segment and each disk's reach are a few times the larger of rmax and the clearance
-  // (tangent disks are placed the clearance apart): at 10 times it their images are far enough
-  // apart that the nearest image is the one meant (generate/periodic_wrap.hpp). The clearance is a
-  // few ulps of the coordinates, so it is the larger only for a cell far from the origin against
-  // its size (at 1.4e10 it is 2e-4: a cell a few ulps across had a tangent disk placed many periods
-  // away, and the nearest image made it overlap its neighbours).
-  const Box cell = domain.bbox();
-  const bool precision = clearance > o.radii.max();
-  const double least = 10 * std::max(o.radii.max(), clearance);
-  const bool narrow =
-      cell.xmax - cell.xmin < least || (domain.periodicity() == Periodicity::xy && cell.ymax - cell.ymin < least);
-  if (narrow) {
-    const std::string size =
-        detail::format_double(cell.xmax - cell.xmin) + " x " + detail::format_double(cell.ymax - cell.ymin);
-    if (!precision) {
-      throw OptionError("a periodic cell must be at least 10 rmax = " + detail::format_double(least) +
-                        " across each periodic direction; it is " + size);
-    }
-    throw OptionError(
-        "a periodic cell must be at least 10 times the clearance that keeps tangent disks apart "
-        "exactly at its coordinates (largest |coordinate| " +
-        detail::format_double(domain.max_abs_coordinate()) + ": clearance " + detail::format_double(clearance) +
-        ", larger than rmax), " + detail::format_double(least) + ", across each periodic direction; it is " + size +
-        ": move the cell near the origin, by whole periods");
-  }
-  if (o.start &&
-      (o.start->x < cell.xmin || o.start->x >= cell.xmax || o.start->y < cell.ymin || o.start->y >= cell.ymax)) {
-    throw OptionError("the start point must lie in the periodic cell");
-  }
-}
-
-void check_options(const FillOptions& o) {
-  (void)o.radii.distribution();  // throws if empty
-  if (o.start && (!std::isfinite(o.start->x) || !std::isfinite(o.start->y))) {
-    throw OptionError("start point must be finite");
-  }
-  if (o.method == Method::boundary && !o.fill_voids) {
-    // Its voids are half of the method: without them every gap that a drawn radius does not fit
-    // is dropped, and the packing keeps large empty areas (packing fraction 0.63-0.65).
-    throw OptionError(
-        "fill_voids = false gives the paper's forms as published (methods closed and open); the "
-        "boundary method keeps its voids always (without them it leaves large empty areas)");
-  }
-}
-
 double seconds_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
 Packing run_plain(const Domain& domain, const FillOptions& options,
                   const std::function<bool(const Progress&)>& progress, std::size_t generation_cap) {
-  check_options(options);
+  // Again for each run: a target's runs fill with other options (scaled radii, a clipped domain).
+  check_options(domain, options);
   const double clearance = detail::clearance_for(domain, options);
-  check_periodic(domain, options, clearance);
   const RadiusDistribution& radii = options.radii.distribution();
   const detail::RunBudget budget = detail::check_limits(domain, options, radii, generation_cap);
   const std::size_t memory_bytes = budget.memory_bytes;
@@ -164,6 +108,7 @@ Packing run_plain(const Domain& domain, const FillOptions& options,
 // A fill to a fraction, count or level runs the plain fill (target/targets.hpp).
 Packing run_fill(const Domain& domain, const FillOptions& options,
                  const std::function<bool(const Progress&)>& progress) {
+  check_options(domain, options);
   Packing p = !detail::has_target(options)
                   ? run_plain(domain, options, progress, options.max_disks)
                   : detail::fill_with_targets(domain, options,

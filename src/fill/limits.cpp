@@ -24,31 +24,6 @@ std::size_t count_of_bytes(double bytes) {
 
 }  // namespace
 
-// The clearance: a few ulps of the largest coordinate any disk centre can have (the domain's,
-// plus the margin by which generated disks overhang the filled box), so that neither the
-// floating-point tangency nor the rounding of the output (box corner + local position) can make
-// tangent disks overlap. docs/robustness.md, "Clearance".
-double clearance_for(const Domain& domain, const FillOptions& o) {
-  // (At most the largest double: radii beyond about 3.6e307 made it infinite.)
-  const double scale = std::min(domain.max_abs_coordinate() + 5 * o.radii.max(), std::numeric_limits<double>::max());
-  if (!(scale >= std::numeric_limits<double>::min())) {
-    // Every coordinate and radius subnormal: a clearance of a few ulps underflows to 0.
-    throw OptionError(
-        "the domain and the radii are too small: their size (largest |coordinate| + 5 rmax = " + format_double(scale) +
-        ") must be at least 2.2250738585072014e-308, the smallest normal double, for a clearance of a "
-        "few ulps to separate tangent disks; scale the domain up (by a power of two, which is exact)");
-  }
-  const double minimum = 16 * 0x1p-52 * scale;
-  if (o.clearance == 0) {
-    return 4 * minimum;
-  }
-  if (!std::isfinite(o.clearance) || o.clearance < minimum) {
-    throw OptionError("clearance must be 0 (automatic) or a finite number >= " + format_double(minimum) +
-                      " for this domain and radius range, got " + format_double(o.clearance));
-  }
-  return o.clearance;
-}
-
 // Why a fill placed no disk: the first of these causes that holds, tested in this order.
 // A disk of radius r inside the domain lies in one polygon's bounding box and has area pi r^2 at
 // most the domain's, so r <= min(sqrt(area / pi), the largest polygon box's half-side): a cheap

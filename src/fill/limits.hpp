@@ -1,10 +1,11 @@
 // What a fill may take: the disk-count and memory estimates checked against FillOptions::max_disks
-// and memory_limit before the run, the clearance, and why a run placed no disk. CGAL-free.
+// and memory_limit before the run, and why a run placed no disk. CGAL-free.
 #pragma once
 
 #include <cstddef>
 
 #include "frontpack/fill.hpp"
+#include "options/clearance.hpp"
 
 namespace frontpack::detail {
 
@@ -20,11 +21,6 @@ struct RunBudget {
 /// `generation_cap` disks, and is estimated so.
 [[nodiscard]] RunBudget check_limits(const Domain& domain, const FillOptions& options, const RadiusDistribution& radii,
                                      std::size_t generation_cap);
-
-/// The clearance tangent disks keep (FillOptions::clearance, or a few ulps of the largest
-/// coordinate a disk can have if 0). Throws OptionError for a clearance below that, or a domain
-/// and radii too small for one.
-[[nodiscard]] double clearance_for(const Domain& domain, const FillOptions& options);
 
 /// Throws NothingFitsError naming why the fill of `domain` with `options` gave `packing` no disk:
 /// a fraction or a level that keeps none, radii larger than the domain holds, a start point

@@ -56,7 +56,7 @@ class Front {
     std::uint8_t inside;     // centre in the box (the bottom wall counts as inside, side walls not)
     std::uint8_t blocked;    // the segment starting here is retired
     std::uint8_t on_front;   // on the front (FrontList)
-    std::uint8_t image;      // an image of a disk across a periodic side (periodic_wrap.hpp): in the grid only
+    std::uint8_t image;      // an image of a disk across a periodic side (periodic/wrap.hpp): in the grid only
   };
   static_assert(sizeof(Node) == 32);
 
@@ -552,7 +552,7 @@ class Front {
   std::size_t fixed_bytes_ = 0;  // the grid's, for the memory limit's message
   double area_ = 0;              // sum of r^2 over the disks placed, for progress reports
 
-  // A periodic cell (periodic_wrap.hpp).
+  // A periodic cell (periodic/wrap.hpp).
   Box region_;  // the cell, as given
   PeriodicImages<Node, kNone> periodic_;
   const PeriodicWrap& wrap_ = periodic_.wrap;  // local

@@ -6,42 +6,12 @@
 #include <string>
 #include <vector>
 
-#include "common/format.hpp"
 #include "domain/level_clip.hpp"
 #include "frontpack/certify.hpp"
 
 namespace frontpack::detail {
 
 namespace {
-
-void check_targets(const Domain& domain, const FillOptions& o) {
-  if (o.fraction && !(*o.fraction > 0 && *o.fraction < 1)) {
-    throw OptionError("fraction " + format_double(*o.fraction) +
-                      ": a packing fraction (disk area / domain area) must lie strictly between 0 and 1");
-  }
-  if (o.jam && (o.fraction || o.count != 0)) {
-    throw OptionError(o.fraction
-                          ? "jam makes the packing as dense as it gets; a target fraction leaves gaps: give one or "
-                            "the other"
-                          : "jam inserts disks until the packing jams; a count stops at a number of disks: give "
-                            "one or the other");
-  }
-  if (o.fraction && o.count > 0) {
-    throw OptionError("a target fraction and a count together over-determine the fill: give one of them");
-  }
-  if (o.count > 0 && o.method == Method::boundary) {
-    throw OptionError(
-        "count: the boundary method starts its fronts on every wall at once, so its first disks line all the "
-        "walls and a count would leave the middle empty; use --method open (fills from the bottom, layer by "
-        "layer) or --method closed (a blob grown from the start point)");
-  }
-  if (o.count > o.max_disks) {
-    throw OptionError("count " + std::to_string(o.count) + " exceeds max_disks = " + std::to_string(o.max_disks));
-  }
-  if (o.height && domain.periodicity() != Periodicity::none) {
-    throw OptionError("height: a periodic cell has no level to fill to (it has no bottom on a periodic axis)");
-  }
-}
 
 // Whether y + r <= level, exactly: the sum's rounding error (two-sum, exact) settles a tie.
 bool below_level(const Disk& d, double level) {
@@ -66,7 +36,6 @@ bool has_target(const FillOptions& options) noexcept {
 }
 
 Packing fill_with_targets(const Domain& domain, const FillOptions& options, const PlainFill& plain) {
-  check_targets(domain, options);
   if (options.height) {
     const Domain part = clip_below(domain, *options.height);
     FillOptions inner = options;

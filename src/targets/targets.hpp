@@ -21,8 +21,8 @@ using PlainFill = std::function<Packing(const Domain&, const FillOptions&, std::
 /// Whether options ask for a target.
 [[nodiscard]] bool has_target(const FillOptions& options) noexcept;
 
-/// Checks the targets' options, then fills below the level (if any), to the fraction or to the
-/// count (at most one of the two). Throws OptionError.
+/// Fills below the level (if any), to the fraction or to the count (at most one of the two), with
+/// options that check_options() has accepted.
 [[nodiscard]] Packing fill_with_targets(const Domain& domain, const FillOptions& options, const PlainFill& plain);
 
 /// The fill to a fraction (target_fraction.cpp): options.fraction set, no height, no count.

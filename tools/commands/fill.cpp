@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <iostream>
 #include <limits>
+#include <map>
 #include <memory>
 #include <optional>
 #include <sstream>
@@ -28,22 +29,16 @@ namespace frontpack_tool::cli {
 
 namespace {
 
-constexpr const char* kDefaultRadius = frontpack::default_radius_spec;
-
 struct FillArgs {
   DomainSource src;
-  std::string method = frontpack::to_string(frontpack::FillOptions{}.method);
-  std::string radius;  // empty: kDefaultRadius
-  std::string seed = "0";
+  // The fill options (frontpack/options.hpp) by name: the text given ("" if not), and for each
+  // flag whether it was given.
+  std::map<std::string, std::string, std::less<>> option_text;
+  std::map<std::string, bool, std::less<>> option_flag;
   std::vector<std::string> outputs;
   std::string format;
   std::string json;
-  std::string window;
-  std::string start;
-  std::string clearance;
   int width = 1200;
-  bool no_voids = false;
-  bool jam = false;
   bool no_histogram = false;
   bool holes = false;
   bool quiet = false;
@@ -53,51 +48,30 @@ struct FillArgs {
   std::string density;              // --density SPEC
   std::string thickness;            // --thickness T
   std::string wall_radius;          // --wall-radius W
-  std::string fraction;             // --fraction F
-  std::string count;                // --count N
-  std::string height;               // --height H
+  [[nodiscard]] const std::string& radius() const { return option_text.at("radius"); }
 };
 
-// --start X,Y: the closed form's first disks (FillOptions::start).
-frontpack::Point parse_point(const char* option, const std::string& text) {
-  static constexpr const char* kExpected = "two numbers X,Y, e.g. 0.5,0.25";
-  const std::vector<double> xy = finite_numbers(option, text, kExpected);
-  if (xy.size() != 2) {
-    throw frontpack::OptionError(given_value(option, text) + ": expected " + kExpected);
-  }
-  return {xy[0], xy[1]};
-}
-
-// The library options that have flags, beyond method, radius, seed and limits.
-void apply_front_options(const FillArgs& a, frontpack::FillOptions& options) {
-  if (!a.window.empty()) {
-    options.window = parse_count("--window", a.window, std::uint64_t{1} << 32);
-  }
-  if (!a.start.empty()) {
-    if (options.method != frontpack::Method::closed) {
-      throw frontpack::OptionError("--start is where the closed form (--method closed) places its first disks; the " +
-                                   std::string(frontpack::to_string(options.method)) + " form has no start point");
+// The fill options given, each read by the library's parser; a flag sets its option to the
+// opposite of the default. The Budget's options come from the DomainSource (every command's).
+frontpack::FillOptions parse_fill_options(const FillArgs& a, const frontpack::Budget& limits) {
+  frontpack::FillOptions options;
+  for (const frontpack::OptionInfo& info : frontpack::fill_option_list()) {
+    const std::string name(info.name);
+    if (info.budget) {
+      continue;
     }
-    options.start = parse_point("--start", a.start);
-  }
-  if (!a.clearance.empty()) {
-    options.clearance = parse_double("--clearance", a.clearance);
-    if (!(options.clearance > 0)) {
-      throw frontpack::OptionError(given_value("--clearance", a.clearance) +
-                                   ": expected a gap > 0 between tangent disks (leave it out for the automatic one)");
+    if (info.kind == frontpack::OptionKind::flag) {
+      if (a.option_flag.at(name)) {
+        frontpack::set_option(options, info, !std::get<bool>(frontpack::default_value(info)));
+      }
+    } else if (const std::string& text = a.option_text.at(name); !text.empty()) {
+      frontpack::set_option(options, info, frontpack::parse_option(info, text, frontpack::flag_name(info)));
     }
   }
-  options.fill_voids = !a.no_voids;
-  options.jam = a.jam;
-  if (!a.fraction.empty()) {
-    options.fraction = parse_double("--fraction", a.fraction);
-  }
-  if (!a.count.empty()) {
-    options.count = parse_count("--count", a.count, std::numeric_limits<std::uint64_t>::max(), 1);
-  }
-  if (!a.height.empty()) {
-    options.height = parse_double("--height", a.height);
-  }
+  options.max_disks = limits.max_count;
+  options.memory_limit = limits.memory_limit;
+  options.stop = stop_token();
+  return options;
 }
 
 // The deck's options, checked before any work; the directory is created if missing (and removed
@@ -137,19 +111,6 @@ DeckPlan plan_deck(const FillArgs& a, std::uint32_t types) {
   return plan;
 }
 
-frontpack::Method parse_method(const std::string& name) {
-  if (name == "closed") {
-    return frontpack::Method::closed;
-  }
-  if (name == "open") {
-    return frontpack::Method::open;
-  }
-  if (name == "boundary") {
-    return frontpack::Method::boundary;
-  }
-  throw frontpack::OptionError(given_value("--method", name) + ": expected closed, open or boundary");
-}
-
 Json fill_json(const FillArgs& a, const std::string& spec, const frontpack::FillOptions& options,
                const frontpack::Domain& domain, const frontpack::Packing& p, const frontpack::PackingStats& s,
                const std::vector<frontpack_tool::Output>& outputs, double seconds_stats, double seconds_total) {
@@ -163,7 +124,7 @@ Json fill_json(const FillArgs& a, const std::string& spec, const frontpack::Fill
          {"domain", frontpack_tool::domain_json(a.src.name(), domain)},
          {"method", frontpack::to_string(options.method)},
          {"radius_spec", spec},
-         {"radius_spec_given", !a.radius.empty()},
+         {"radius_spec_given", !a.radius().empty()},
          {"radius_distribution", options.radii.describe()},
          {"seed", options.seed},
          {"disks", p.disks.size()},
@@ -201,23 +162,22 @@ struct StatsSamples {
   static constexpr std::size_t text = 250'000;
 };
 
-int run_fill(const FillArgs& a) {
-  const auto t_start = Clock::now();
-  const std::string spec = a.radius.empty() ? std::string(kDefaultRadius) : a.radius;
+// What a run needs once its command line is read and checked: the options, the outputs and the
+// deck planned, the files checked, the domain loaded and the options checked against it.
+struct FillPlan {
+  std::string spec;  // the radius spec, given or the default
   frontpack::FillOptions options;
-  options.method = parse_method(a.method);
-  options.radii = frontpack::parse_radii(spec);
-  options.seed = parse_count("--seed", a.seed, std::numeric_limits<std::uint64_t>::max());
-  const frontpack::Budget limits = budget(a.src);
-  options.max_disks = limits.max_count;
-  options.memory_limit = limits.memory_limit;
-  options.stop = stop_token();
-  apply_front_options(a, options);
-  const std::vector<frontpack_tool::Output> outputs = frontpack_tool::resolve_outputs(a.outputs, a.format, false);
-  const frontpack::TypeRule type_rule = a.types.empty() ? frontpack::TypeRule{} : frontpack::parse_type_rule(a.types);
-  DeckPlan deck = plan_deck(a, type_rule.count());
-  deck.options.stop = options.stop;
-  deck.options.budget = limits;
+  frontpack::Budget limits;
+  std::vector<frontpack_tool::Output> outputs;
+  frontpack::TypeRule type_rule;
+  DeckPlan deck;
+  frontpack::DomainFile file;
+};
+
+// The files a run reads and writes, checked before any work (no output overwrites an input); the
+// deck's directory is made here (and removed again if the run commits nothing).
+void check_run_files(const FillArgs& a, const std::string& spec, const std::vector<frontpack_tool::Output>& outputs,
+                     const frontpack::TypeRule& type_rule, const DeckPlan& deck) {
   std::vector<frontpack_tool::FileUse> inputs = domain_inputs(a.src);
   add_curve_input(spec, inputs);
   for (const std::string& region : type_rule.region_names) {
@@ -234,43 +194,68 @@ int run_fill(const FillArgs& a) {
     }
   }
   frontpack_tool::check_files(inputs, output_files);
+}
+
+FillPlan plan_fill(const FillArgs& a) {
+  std::string spec = a.radius().empty() ? frontpack::default_text(frontpack::fill_option("radius")) : a.radius();
+  const frontpack::Budget limits = budget(a.src);
+  frontpack::FillOptions options = parse_fill_options(a, limits);
+  std::vector<frontpack_tool::Output> outputs = frontpack_tool::resolve_outputs(a.outputs, a.format, false);
+  frontpack::TypeRule type_rule = a.types.empty() ? frontpack::TypeRule{} : frontpack::parse_type_rule(a.types);
+  DeckPlan deck = plan_deck(a, type_rule.count());
+  deck.options.stop = options.stop;
+  deck.options.budget = limits;
+  check_run_files(a, spec, outputs, type_rule, deck);
   // Curves become polylines within a tenth of the smallest radius of the domain's true boundary.
-  const frontpack::DomainFile file = load_file(a.src, options.radii.min() / 10);
-  const frontpack::Domain& domain = file.domain;
-  if (options.start && domain.num_polygons() > 1) {
-    throw frontpack::OptionError("--start: the domain has " + std::to_string(domain.num_polygons()) +
-                                 " polygons, each filled from its own start (the centre of its bounding box); "
-                                 "--start takes a domain of one polygon");
-  }
+  frontpack::DomainFile file = load_file(a.src, options.radii.min() / 10);
+  frontpack::check_options(file.domain, options);
+  return FillPlan{.spec = std::move(spec),
+                  .options = std::move(options),
+                  .limits = limits,
+                  .outputs = std::move(outputs),
+                  .type_rule = std::move(type_rule),
+                  .deck = std::move(deck),
+                  .file = std::move(file)};
+}
 
-  frontpack_tool::ProgressLine line(frontpack_tool::ProgressLine::mode_for(!a.quiet, a.progress));
-  frontpack::Packing p;
-  {
-    frontpack::Generator generator(domain, options);
-    generator.on_progress([&line](const frontpack::Progress& progress) {
-      line.update(progress);
-      return true;
-    });
-    try {
-      p = generator.run();
-    } catch (const frontpack::NothingFitsError& e) {
-      line.clear();
-      std::cerr << "frontpack: " << e.what() << "; nothing written\n";
-      return nothing_fits;
-    }
+// The generator, with the progress line; none if no disk fits (said on stderr).
+std::optional<frontpack::Packing> run_generator(const FillPlan& plan, frontpack_tool::ProgressLine& line) {
+  frontpack::Generator generator(plan.file.domain, plan.options);
+  generator.on_progress([&line](const frontpack::Progress& progress) {
+    line.update(progress);
+    return true;
+  });
+  try {
+    return generator.run();
+  } catch (const frontpack::NothingFitsError& e) {
+    line.clear();
+    std::cerr << "frontpack: " << e.what() << "; nothing written\n";
+    return std::nullopt;
   }
+}
 
-  // Statistics only where they are shown or written: the text summary shows the fractions and
-  // the radii only; the JSON summary has the contacts and the quality measures too (empty circle,
-  // coverage profile and cells: about 0.6 s per million disks), and the hole counts (about 3 s
-  // more) only with --holes (`frontpack stats` shows them).
+// What the report of a run shows and writes, besides the packing.
+struct FillResult {
+  frontpack::PackingStats stats;
+  double seconds_stats = 0;
+  std::vector<std::uint32_t> types;
+  std::vector<std::size_t> per_type;  // disks per type: [k] for type k + 1
+  std::vector<std::string> deck_files;
+};
+
+// Statistics only where they are shown or written: the text summary shows the fractions and
+// the radii only; the JSON summary has the contacts and the quality measures too (empty circle,
+// coverage profile and cells: about 0.6 s per million disks), and the hole counts (about 3 s
+// more) only with --holes (`frontpack stats` shows them).
+void measure_packing(const FillArgs& a, const FillPlan& plan, const frontpack::Packing& p,
+                     frontpack_tool::ProgressLine& line, FillResult& r) {
   const auto t_stats = Clock::now();
-  frontpack::PackingStats s;
   if (!a.quiet || !a.json.empty()) {
     line.phase("measuring " + std::to_string(p.disks.size()) + " disks");
     const bool quality = !a.json.empty();
-    s = frontpack::measure(domain, p.disks,
-                           {.requested = quality ? std::optional<frontpack::Radii>(options.radii) : std::nullopt,
+    r.stats =
+        frontpack::measure(plan.file.domain, p.disks,
+                           {.requested = quality ? std::optional<frontpack::Radii>(plan.options.radii) : std::nullopt,
                             .samples = quality ? StatsSamples::json : StatsSamples::text,
                             .histogram_bins = quality ? frontpack::StatsOptions{}.histogram_bins : 0,
                             .contacts = quality,
@@ -278,104 +263,141 @@ int run_fill(const FillArgs& a) {
                             .holes = quality && a.holes,
                             .coverage_profile = quality,
                             .cell_coverage = quality,
-                            .budget = limits,
-                            .stop = options.stop});
+                            .budget = plan.limits,
+                            .stop = plan.options.stop});
   }
-  const double seconds_stats = seconds_since(t_stats);
+  r.seconds_stats = seconds_since(t_stats);
+  r.types = a.types.empty() ? std::vector<std::uint32_t>{} : frontpack::assign_types(plan.type_rule, p.disks);
+  for (const std::uint32_t t : r.types) {
+    r.per_type.resize(std::max<std::size_t>(r.per_type.size(), t), 0);
+    ++r.per_type[t - 1];
+  }
+}
 
+// Every output, the deck and the JSON summary, written to temporary files and committed together.
+void write_outputs(const FillArgs& a, const FillPlan& plan, const frontpack::Packing& p,
+                   frontpack_tool::ProgressLine& line, FillResult& r, Clock::time_point t_start) {
+  const frontpack::Domain& domain = plan.file.domain;
   frontpack_tool::PendingOutputs pending;
   const frontpack_tool::RenderOptions picture{.width_px = a.width,
                                               .histogram = !a.no_histogram,
-                                              .requested = options.radii,
-                                              .requested_spec = spec,
-                                              .stop = options.stop};
-  const std::vector<std::uint32_t> types =
-      a.types.empty() ? std::vector<std::uint32_t>{} : frontpack::assign_types(type_rule, p.disks);
-  for (const auto& o : outputs) {
+                                              .requested = plan.options.radii,
+                                              .requested_spec = plan.spec,
+                                              .stop = plan.options.stop};
+  for (const auto& o : plan.outputs) {
     line.phase("writing " + o.path.string());
-    pending.write(o, domain, p.disks, picture, options.stop, types);
+    pending.write(o, domain, p.disks, picture, plan.options.stop, r.types);
   }
-  std::vector<std::string> deck_files;
-  if (deck.wanted) {
-    line.phase("writing the " + std::string(frontpack::to_string(deck.options.simulator)) + " deck in " +
-               deck.dir.string());
-    for (const frontpack::DeckFile& f : frontpack::make_deck(domain, p.disks, types, deck.options)) {
-      deck_files.push_back((deck.dir / f.name).string());
-      pending.write_text(deck.dir / f.name, f.text);
+  if (plan.deck.wanted) {
+    line.phase("writing the " + std::string(frontpack::to_string(plan.deck.options.simulator)) + " deck in " +
+               plan.deck.dir.string());
+    for (const frontpack::DeckFile& f : frontpack::make_deck(domain, p.disks, r.types, plan.deck.options)) {
+      r.deck_files.push_back((plan.deck.dir / f.name).string());
+      pending.write_text(plan.deck.dir / f.name, f.text);
     }
-  }
-  // Disks per type: [k] for type k + 1.
-  std::vector<std::size_t> per_type;
-  for (const std::uint32_t t : types) {
-    per_type.resize(std::max<std::size_t>(per_type.size(), t), 0);
-    ++per_type[t - 1];
   }
   if (!a.json.empty()) {
-    Json j = fill_json(a, spec, options, domain, p, s, outputs, seconds_stats, seconds_since(t_start));
-    if (!file.curves.empty()) {
-      j["domain"]["curves"] = curves_json(file);
+    Json j = fill_json(a, plan.spec, plan.options, domain, p, r.stats, plan.outputs, r.seconds_stats,
+                       seconds_since(t_start));
+    if (!plan.file.curves.empty()) {
+      j["domain"]["curves"] = curves_json(plan.file);
     }
-    if (file.format == frontpack::DomainFormat::dxf) {
-      j["domain"]["units"] = file.units;  // "" when the file states none
+    if (plan.file.format == frontpack::DomainFormat::dxf) {
+      j["domain"]["units"] = plan.file.units;  // "" when the file states none
     }
-    if (!types.empty()) {
-      j["types"] = Json{{"rule", a.types}, {"disks_per_type", per_type}};
+    if (!r.types.empty()) {
+      j["types"] = Json{{"rule", a.types}, {"disks_per_type", r.per_type}};
     }
-    if (deck.wanted) {
-      j["deck"] = Json{{"simulator", a.deck[0]}, {"directory", deck.dir.string()}, {"files", deck_files}};
+    if (plan.deck.wanted) {
+      j["deck"] = Json{{"simulator", a.deck[0]}, {"directory", plan.deck.dir.string()}, {"files", r.deck_files}};
     }
     pending.write_text(a.json, j.dump(2) + "\n");
   }
   line.phase("committing the outputs");
-  pending.commit_all(options.stop);
+  pending.commit_all(plan.options.stop);
   line.clear();
+}
 
+// The text summary on stderr: the packing, its certificate and time, and the files written.
+void print_summary(const FillArgs& a, const FillPlan& plan, const frontpack::Packing& p, const FillResult& r) {
+  const frontpack::Certificate& c = p.certificate;
+  const frontpack::FillOptions& options = plan.options;
+  const double seconds_fill =
+      p.stats.seconds_front + p.stats.seconds_jam + p.stats.seconds_cull + p.stats.seconds_overlap;
+  std::cerr << "disks:       " << p.disks.size() << " (" << frontpack::to_string(options.method) << " form, seed "
+            << options.seed << (p.truncated ? ", truncated at --max-disks" : "") << ")\n"
+            << "radius:      " << plan.spec << (a.radius().empty() ? " (the default; set with --radius)" : "") << "\n"
+            << "fraction:    " << frontpack_tool::fraction_line(r.stats) << "\n"
+            << "radii:       " << frontpack_tool::radii_line(r.stats.sizes) << "\n"
+            << (p.target ? "target:      " + frontpack_tool::target_line(*p.target) + "\n" : std::string())
+            << "certificate: " << (c.dropped == 0 ? "certified" : "certified after repair") << ": " << c.generated
+            << " generated, " << c.culled << " culled (not inside), " << c.dropped
+            << " dropped (overlap); every decision exact\n"
+            << (options.jam ? "jam:         " + std::to_string(p.stats.jam_inserted) + " disks inserted in " +
+                                  std::to_string(p.stats.jam_rounds) + " rounds, " + std::to_string(p.stats.jam_steps) +
+                                  " relaxation steps\n"
+                            : std::string())
+            << "time:        " << fmt(seconds_fill) << " s (front " << fmt(p.stats.seconds_front)
+            << (options.jam ? ", jam " + fmt(p.stats.seconds_jam) : std::string()) << ", cull "
+            << fmt(p.stats.seconds_cull) << ", overlap pass " << fmt(p.stats.seconds_overlap) << "), statistics "
+            << fmt(r.seconds_stats) << " s\n"
+            << units_line(plan.file) << curve_lines(plan.file, 10);
+  if (!r.types.empty()) {
+    std::cerr << "types:       " << r.per_type.size() << " (" << a.types << "):";
+    for (std::size_t k = 0; k < r.per_type.size(); ++k) {
+      std::cerr << (k == 0 ? " " : ", ") << r.per_type[k] << " of type " << k + 1;
+    }
+    std::cerr << "\n";
+  }
+  for (const auto& o : plan.outputs) {
+    std::cerr << "wrote:       " << o.path.string() << " (" << frontpack_tool::format_name(o.format) << ")\n";
+  }
+  if (!a.json.empty()) {
+    std::cerr << "wrote:       " << a.json << " (summary)\n";
+  }
+  for (const std::string& f : r.deck_files) {
+    std::cerr << "wrote:       " << f << " (" << a.deck[0] << " deck)\n";
+  }
+}
+
+int run_fill(const FillArgs& a) {
+  const auto t_start = Clock::now();
+  const FillPlan plan = plan_fill(a);
+  frontpack_tool::ProgressLine line(frontpack_tool::ProgressLine::mode_for(!a.quiet, a.progress));
+  const std::optional<frontpack::Packing> run = run_generator(plan, line);
+  if (!run) {
+    return nothing_fits;
+  }
+  const frontpack::Packing& p = *run;
+  FillResult result;
+  measure_packing(a, plan, p, line, result);
+  write_outputs(a, plan, p, line, result, t_start);
   if (!a.quiet) {
-    const frontpack::Certificate& c = p.certificate;
-    const double seconds_fill =
-        p.stats.seconds_front + p.stats.seconds_jam + p.stats.seconds_cull + p.stats.seconds_overlap;
-    std::cerr << "disks:       " << p.disks.size() << " (" << frontpack::to_string(options.method) << " form, seed "
-              << options.seed << (p.truncated ? ", truncated at --max-disks" : "") << ")\n"
-              << "radius:      " << spec << (a.radius.empty() ? " (the default; set with --radius)" : "") << "\n"
-              << "fraction:    " << frontpack_tool::fraction_line(s) << "\n"
-              << "radii:       " << frontpack_tool::radii_line(s.sizes) << "\n"
-              << (p.target ? "target:      " + frontpack_tool::target_line(*p.target) + "\n" : std::string())
-              << "certificate: " << (c.dropped == 0 ? "certified" : "certified after repair") << ": " << c.generated
-              << " generated, " << c.culled << " culled (not inside), " << c.dropped
-              << " dropped (overlap); every decision exact\n"
-              << (options.jam ? "jam:         " + std::to_string(p.stats.jam_inserted) + " disks inserted in " +
-                                    std::to_string(p.stats.jam_rounds) + " rounds, " +
-                                    std::to_string(p.stats.jam_steps) + " relaxation steps\n"
-                              : std::string())
-              << "time:        " << fmt(seconds_fill) << " s (front " << fmt(p.stats.seconds_front)
-              << (options.jam ? ", jam " + fmt(p.stats.seconds_jam) : std::string()) << ", cull "
-              << fmt(p.stats.seconds_cull) << ", overlap pass " << fmt(p.stats.seconds_overlap) << "), statistics "
-              << fmt(seconds_stats) << " s\n"
-              << units_line(file) << curve_lines(file, 10);
-    if (!types.empty()) {
-      std::cerr << "types:       " << per_type.size() << " (" << a.types << "):";
-      for (std::size_t k = 0; k < per_type.size(); ++k) {
-        std::cerr << (k == 0 ? " " : ", ") << per_type[k] << " of type " << k + 1;
-      }
-      std::cerr << "\n";
-    }
-    for (const auto& o : outputs) {
-      std::cerr << "wrote:       " << o.path.string() << " (" << frontpack_tool::format_name(o.format) << ")\n";
-    }
-    if (!a.json.empty()) {
-      std::cerr << "wrote:       " << a.json << " (summary)\n";
-    }
-    for (const std::string& f : deck_files) {
-      std::cerr << "wrote:       " << f << " (" << a.deck[0] << " deck)\n";
-    }
+    print_summary(a, plan, p, result);
   }
   if (p.truncated) {
-    std::cerr << "frontpack: stopped at --max-disks " << options.max_disks << ": the packing written ("
+    std::cerr << "frontpack: stopped at --max-disks " << plan.options.max_disks << ": the packing written ("
               << p.disks.size() << (p.disks.size() == 1 ? " disk" : " disks")
               << ", certified) does not fill the domain\n";
     return max_disks_reached;
   }
   return ok;
+}
+
+// The fill options' flags, one per option of the description but the Budget's (every command's,
+// add_domain_options): a flag for each on/off option, a value for the others.
+void add_fill_options(CLI::App& cmd, FillArgs& args) {
+  for (const frontpack::OptionInfo& info : frontpack::fill_option_list()) {
+    const std::string name(info.name);
+    if (info.budget) {
+      continue;
+    }
+    if (info.kind == frontpack::OptionKind::flag) {
+      cmd.add_flag(frontpack::flag_name(info), args.option_flag[name], option_help(info));
+    } else {
+      cmd.add_option(frontpack::flag_name(info), args.option_text[name], option_help(info));
+    }
+  }
 }
 
 }  // namespace
@@ -387,11 +409,7 @@ Command add_fill(CLI::App& app) {
   add_periodic_options(*cmd, args->src);
   cmd->get_option("DOMAIN")->excludes(args->src.periodic_option);
   args->src.periodic_option->excludes(cmd->get_option("DOMAIN"));
-  cmd->add_option("--method", args->method, "closed (Sec. 2), open (Sec. 3) or boundary (the domain's edges as walls)")
-      ->capture_default_str();
-  cmd->add_option("--radius", args->radius, std::string(kRadiusHelp) + " (default " + kDefaultRadius + ")");
-  cmd->add_option("--seed", args->seed, "64-bit seed, 0 to 18446744073709551615 (same seed, same packing)")
-      ->capture_default_str();
+  add_fill_options(*cmd, *args);
   cmd->add_option("-o,--output", args->outputs,
                   "output file, any number; format by extension: " + frontpack_tool::extensions_help(false));
   cmd->add_option("--format", args->format,
@@ -418,28 +436,6 @@ Command add_fill(CLI::App& app) {
   cmd->add_flag("--holes", args->holes,
                 "with --json: also count the holes that take the median and the largest radius (about 3 s "
                 "per million disks; frontpack stats counts them always)");
-  cmd->add_option("--window", args->window,
-                  "front check window M of the paper's forms (Sec. 2.4.3): front disks examined on each side; 0: "
-                  "the whole front (default 5)");
-  cmd->add_option("--start", args->start,
-                  "X,Y: where the closed form places its first three disks (default: the "
-                  "centre of each polygon's bounding box)");
-  cmd->add_option("--clearance", args->clearance,
-                  "gap between tangent disks, at least 16 ulps of the coordinates (default: automatic, a few ulps; "
-                  "docs/robustness.md)");
-  cmd->add_flag("--no-voids", args->no_voids,
-                "the paper's forms as published: no void filling (refused by --method boundary)");
-  cmd->add_flag("--jam", args->jam,
-                "after the front, insert disks and relax the overlaps away until the packing jams: denser (bidisperse "
-                "1:1.4: about 0.837 instead of 0.815; little change at wide size ranges); costs minutes per "
-                "100,000 disks (docs/jam.md)");
-  cmd->add_option("--fraction", args->fraction,
-                  "F: a packing fraction below the method's dense one, within 0.002, the radii as requested "
-                  "(no contacts: docs/fraction.md)");
-  cmd->add_option("--count", args->count,
-                  "N: stop after N disks, a compact region: --method open fills from the bottom, closed from the "
-                  "start point");
-  cmd->add_option("--height", args->height, "H: fill only the part of the domain below y = H");
   cmd->add_flag("--progress", args->progress,
                 "show the progress line even when stderr is not a terminal (one line per phase, for logs)");
   cmd->add_flag("-q,--quiet", args->quiet, "print nothing but errors (no summary, no progress line)");

@@ -92,7 +92,7 @@ class Elements {
   }
 
   // ------------------------------------------------------------------------------------------
-  // A periodic cell (periodic_wrap.hpp; the cell is [0, lx) x [0, ly), local). A disk's centre is
+  // A periodic cell (periodic/wrap.hpp; the cell is [0, lx) x [0, ly), local). A disk's centre is
   // kept in the cell; a disk near a periodic side has images, nodes in the grid's cells only, never
   // in a gap: what a scan finds may be an image, and real() names its disk. Every position is
   // computed from nodes as seen from one of them (near(): the minimum image), which a cell at least

@@ -1,5 +1,4 @@
-// The values of the tool's options (option_values.hpp).
-#include "option_values.hpp"
+// Option values from text (frontpack/options.hpp, namespace option_text).
 
 #include <algorithm>
 #include <cctype>
@@ -9,8 +8,9 @@
 #include <system_error>
 
 #include "frontpack/errors.hpp"
+#include "frontpack/options.hpp"
 
-namespace frontpack_tool::cli {
+namespace frontpack::option_text {
 
 namespace {
 
@@ -27,27 +27,26 @@ std::string given_value(std::string_view option, std::string_view text) {
   return std::string(option) + " " + quoted(text, 80);
 }
 
-std::uint64_t parse_count(std::string_view option, const std::string& text, std::uint64_t max, std::uint64_t min) {
+std::uint64_t parse_count(std::string_view option, std::string_view text, std::uint64_t max, std::uint64_t min) {
   std::uint64_t value = 0;
   const char* first = text.data();
   const char* last = text.data() + text.size();
-  const bool digits = !text.empty() && text.find_first_not_of("0123456789") == std::string::npos;
+  const bool digits = !text.empty() && text.find_first_not_of("0123456789") == std::string_view::npos;
   const auto [end, ec] = digits ? std::from_chars(first, last, value) : std::from_chars_result{first, std::errc()};
   const std::string range = "a whole number from " + std::to_string(min) + " to " + std::to_string(max);
   if (!digits) {
-    throw frontpack::OptionError(given_value(option, text) + ": expected " + range +
-                                 (text.empty() ? "" : " (digits only)"));
+    throw OptionError(given_value(option, text) + ": expected " + range + (text.empty() ? "" : " (digits only)"));
   }
   if (ec == std::errc::result_out_of_range || end != last || value > max) {
-    throw frontpack::OptionError(given_value(option, text) + ": too large; expected " + range);
+    throw OptionError(given_value(option, text) + ": too large; expected " + range);
   }
   if (value < min) {
-    throw frontpack::OptionError(given_value(option, text) + ": expected " + range);
+    throw OptionError(given_value(option, text) + ": expected " + range);
   }
   return value;
 }
 
-std::size_t parse_bytes(std::string_view option, const std::string& text) {
+std::size_t parse_bytes(std::string_view option, std::string_view text) {
   std::size_t digits = 0;
   while (digits < text.size() && text[digits] >= '0' && text[digits] <= '9') {
     ++digits;
@@ -61,15 +60,13 @@ std::size_t parse_bytes(std::string_view option, const std::string& text) {
     shift = u == std::string::npos ? -1 : 10 * static_cast<int>(u + 1);
   }
   if (digits == 0 || shift < 0) {
-    throw frontpack::OptionError(given_value(option, text) +
-                                 ": expected a number of bytes, with an optional suffix K, M, G or T (powers of "
-                                 "1024), e.g. 512M or 2G; 0 for three quarters of the machine's memory");
+    throw OptionError(given_value(option, text) + ": expected " + std::string(bytes_expected));
   }
   std::uint64_t value = 0;
   const auto [end, ec] = std::from_chars(text.data(), text.data() + digits, value);
   (void)end;
   if (ec != std::errc{} || value > (std::numeric_limits<std::size_t>::max() >> shift)) {
-    throw frontpack::OptionError(given_value(option, text) + ": too large");
+    throw OptionError(given_value(option, text) + ": too large");
   }
   return static_cast<std::size_t>(value) << shift;
 }
@@ -86,7 +83,7 @@ std::optional<double> finite_number(std::string_view text) {
 double parse_double(std::string_view option, std::string_view text) {
   const std::optional<double> value = finite_number(text);
   if (!value) {
-    throw frontpack::OptionError(given_value(option, text) + ": expected a finite number, e.g. 0.5 or -2e-3");
+    throw OptionError(given_value(option, text) + ": expected a finite number, e.g. 0.5 or -2e-3");
   }
   return *value;
 }
@@ -94,21 +91,21 @@ double parse_double(std::string_view option, std::string_view text) {
 double parse_positive(std::string_view option, std::string_view text) {
   const std::optional<double> value = finite_number(text);
   if (!value || !(*value > 0)) {
-    throw frontpack::OptionError(given_value(option, text) + ": expected a finite number > 0");
+    throw OptionError(given_value(option, text) + ": expected a finite number > 0");
   }
   return *value;
 }
 
-std::vector<double> finite_numbers(std::string_view option, const std::string& text, std::string_view expected) {
+std::vector<double> finite_numbers(std::string_view option, std::string_view text, std::string_view expected) {
   std::vector<double> values;
   std::size_t begin = 0;
   while (true) {
     const std::size_t comma = std::min(text.find(',', begin), text.size());
-    const std::string_view item = std::string_view(text).substr(begin, comma - begin);
+    const std::string_view item = text.substr(begin, comma - begin);
     const std::optional<double> value = finite_number(item);
     if (!value) {
-      throw frontpack::OptionError(given_value(option, text) + ": " + quoted(item, 40) +
-                                   " is not a finite number; expected " + std::string(expected));
+      throw OptionError(given_value(option, text) + ": " + quoted(item, 40) + " is not a finite number; expected " +
+                        std::string(expected));
     }
     values.push_back(*value);
     if (comma == text.size()) {
@@ -118,4 +115,4 @@ std::vector<double> finite_numbers(std::string_view option, const std::string& t
   }
 }
 
-}  // namespace frontpack_tool::cli
+}  // namespace frontpack::option_text
