@@ -11,6 +11,7 @@
 #include "frontpack/fill.hpp"
 #include "frontpack/geometry.hpp"
 #include "frontpack/io.hpp"
+#include "frontpack/method.hpp"
 #include "frontpack/output_file.hpp"
 #include "frontpack/sizes.hpp"
 #include "frontpack/stats.hpp"

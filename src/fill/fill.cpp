@@ -192,13 +192,4 @@ Packing Generator::run() {
   return run_fill(domain_, options_, progress_);
 }
 
-const char* to_string(Method method) noexcept {
-  switch (method) {
-    case Method::closed: return "closed";
-    case Method::open: return "open";
-    case Method::boundary: return "boundary";
-  }
-  return "unknown";
-}
-
 }  // namespace frontpack
