@@ -233,6 +233,11 @@ Packing run_fill(const Domain& domain, const FillOptions& options,
                                               [&progress](const Domain& d, const FillOptions& o, std::size_t cap) {
                                                 return run_plain(d, o, progress, cap);
                                               });
+  if (p.target) {
+    // A fill to a level culls against the unclipped domain too (targets.hpp): the certificate
+    // counts those disks with its own culls.
+    p.certificate.culled += p.target->outside_original;
+  }
   if (p.disks.empty() && !p.cancelled) {
     detail::throw_nothing_fits(domain, options, p);
   }

@@ -22,7 +22,10 @@ using PlainFill = std::function<Packing(const Domain&, const FillOptions&, std::
 [[nodiscard]] bool has_target(const FillOptions& options) noexcept;
 
 /// Checks the targets' options, then fills below the level (if any), to the fraction or to the
-/// count (at most one of the two). Throws OptionError.
+/// count (at most one of the two). Returns the plain fill's packing with the targets' disks and
+/// their TargetReport in Packing::target; the disks culled against the unclipped domain are
+/// counted there (outside_original), not in the certificate, which is the certifier's (fill()
+/// adds them to it). Throws OptionError.
 [[nodiscard]] Packing fill_with_targets(const Domain& domain, const FillOptions& options, const PlainFill& plain);
 
 /// The fill to a fraction (target_fraction.cpp): options.fraction set, no height, no count.
