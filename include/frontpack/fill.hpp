@@ -23,21 +23,10 @@
 #include "frontpack/domain.hpp"
 #include "frontpack/errors.hpp"
 #include "frontpack/geometry.hpp"
+#include "frontpack/method.hpp"
 #include "frontpack/sizes.hpp"
 
 namespace frontpack {
-
-enum class Method : std::uint8_t {
-  closed,  ///< Sec. 2: grows from three mutually tangent disks at the centre
-  open,    ///< Sec. 3: layer by layer from the bottom wall, walls as disks of infinite radius
-  /// Beyond the paper: the domain's own edges are the walls (the open form's walls generalised
-  /// to every edge of every ring, reflex vertices as zero-radius obstacles); the front starts
-  /// along all rings and advances inwards, and voids behind it take later, smaller disks.
-  /// Nothing is culled; the density next to the boundary is that of the interior.
-  boundary,
-};
-
-[[nodiscard]] const char* to_string(Method method) noexcept;
 
 /// FillOptions{}.radii written as a radius spec (parse_radii()): what `frontpack fill` draws
 /// when given no --radius.

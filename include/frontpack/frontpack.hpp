@@ -12,6 +12,7 @@
 #include "frontpack/formats.hpp"
 #include "frontpack/geometry.hpp"
 #include "frontpack/io.hpp"
+#include "frontpack/method.hpp"
 #include "frontpack/options.hpp"
 #include "frontpack/output_file.hpp"
 #include "frontpack/sizes.hpp"

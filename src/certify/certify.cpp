@@ -8,9 +8,9 @@
 
 #include "certify/cull.hpp"
 #include "certify/overlap_pass.hpp"
-#include "periodic/overlap_pass.hpp"
 #include "certify/report.hpp"
 #include "frontpack/certify.hpp"
+#include "periodic/overlap_pass.hpp"
 
 namespace frontpack {
 
@@ -34,10 +34,11 @@ void pairs_for(const Domain& domain, std::span<const Disk> disks, std::vector<st
 
 }  // namespace
 
-Certificate certify_fill(const Domain& domain, std::vector<Disk>& disks, std::span<const std::size_t> part_end,
-                         const std::stop_token& stop, FillStats& stats) {
+CertifyResult certify_fill(const Domain& domain, std::vector<Disk>& disks, std::span<const std::size_t> part_end,
+                           const std::stop_token& stop) {
   auto t0 = std::chrono::steady_clock::now();
-  Certificate certificate;
+  CertifyResult result;
+  Certificate& certificate = result.certificate;
   certificate.generated = disks.size();
   {
     std::vector<std::uint8_t> inside(disks.size());
@@ -45,7 +46,7 @@ Certificate certify_fill(const Domain& domain, std::vector<Disk>& disks, std::sp
     keep_where(disks, inside, 1);
   }
   certificate.culled = certificate.generated - disks.size();
-  stats.seconds_cull = seconds_since(t0);
+  result.seconds_cull = seconds_since(t0);
   t0 = std::chrono::steady_clock::now();
 
   // Drop the later disk of every overlapping pair, in the order of the sorted pairs: deterministic.
@@ -61,8 +62,8 @@ Certificate certify_fill(const Domain& domain, std::vector<Disk>& disks, std::sp
     disks.shrink_to_fit();
   }
   certificate.exact = true;
-  stats.seconds_overlap = seconds_since(t0);
-  return certificate;
+  result.seconds_overlap = seconds_since(t0);
+  return result;
 }
 
 }  // namespace detail

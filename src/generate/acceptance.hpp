@@ -6,8 +6,9 @@
 
 #include <cmath>
 
+#include <cstddef>
+
 #include "exact/overlap.hpp"
-#include "frontpack/fill.hpp"
 
 namespace frontpack::detail {
 
@@ -30,11 +31,12 @@ struct Probe {
 /// in the coordinates written out; tangent placements, at the full clearance, always pass (so a
 /// candidate's parents need no skipping). Outside a band of a quarter of the clearance around that
 /// distance floating point decides; inside it, the exact predicate does, on the very doubles
-/// (counted in FillStats::exact_checks). A Node is anything with members x, y and r.
+/// (counted in the counter the test is given, FrontReport::exact_checks). A Node is anything with
+/// members x, y and r.
 class OverlapTest {
  public:
-  OverlapTest(double clearance, FillStats& stats) noexcept
-      : margin_(clearance / 2), band_(clearance / 4), stats_(&stats) {}
+  OverlapTest(double clearance, std::size_t& exact_checks) noexcept
+      : margin_(clearance / 2), band_(clearance / 4), exact_checks_(&exact_checks) {}
 
   [[nodiscard]] double margin() const noexcept { return margin_; }
   [[nodiscard]] double band() const noexcept { return band_; }
@@ -80,13 +82,13 @@ class OverlapTest {
   // call's arguments made them copy every disk to the stack).
   template <class Node>
   [[gnu::noinline, gnu::cold]] bool exact(const Probe& p, const Node& o) {
-    ++stats_->exact_checks;
+    ++*exact_checks_;
     return disks_closer_than_exact({p.x, p.y}, p.r, {o.x, o.y}, o.r, margin_);
   }
 
   double margin_;
   double band_;
-  FillStats* stats_;
+  std::size_t* exact_checks_;
 };
 
 }  // namespace frontpack::detail

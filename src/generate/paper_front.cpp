@@ -27,11 +27,12 @@
 #include "generate/acceptance.hpp"
 #include "generate/disk_grid.hpp"
 #include "generate/front_list.hpp"
-#include "periodic/front_images.hpp"
+#include "generate/run_control.hpp"
 #include "generate/scale.hpp"
 #include "generate/tangency.hpp"
 #include "generate/void_buckets.hpp"
 #include "generate/window_walk.hpp"
+#include "periodic/front_images.hpp"
 
 namespace frontpack::detail {
 
@@ -61,13 +62,12 @@ class Front {
   static_assert(sizeof(Node) == 32);
 
  public:
-  Front(const FrontSettings& req, const Box& region, Rng& rng, std::vector<Disk>& out, FillStats& stats)
+  Front(const FrontSettings& req, const Box& region, Rng& rng, std::vector<Disk>& out)
       : req_(req),
         rng_(rng),
         out_(out),
-        stats_(stats),
         frame_(*req.radii, req.clearance, region),
-        overlap_(frame_.clearance, stats),
+        overlap_(frame_.clearance, report_.exact_checks),
         control_(req.max_disks, req.tick),
         region_(region) {
     box_ = Box{0, 0, frame_.width, frame_.height};
@@ -80,7 +80,7 @@ class Front {
     fill_voids_ = req.fill_voids;
     classes_ = RadiusClasses<kVoidClasses>(frame_.rmin, frame_.rmax);
 
-    // The memory limit: the grid's cell heads, then peak_bytes_per_disk per disk generated.
+    // The memory limit: the grid's cell heads, then bytes_per_disk per disk generated.
     grid_ = CellGrid(box_.xmin, box_.ymin, box_.width(), box_.height(), frame_.rmax);
     const std::size_t grid_bytes = grid_.cells() * sizeof(std::int32_t);
     if (req.memory_limit != 0) {
@@ -90,7 +90,7 @@ class Front {
                                std::to_string(grid_bytes) + " bytes",
                            count_of(estimate_disks(region, *req.radii), 1e18));
       }
-      control_.limit_memory(req.memory_limit - grid_bytes);
+      control_.limit_memory(req.memory_limit - grid_bytes, req.bytes_per_disk);
     }
     fixed_bytes_ = grid_bytes;
 
@@ -116,21 +116,20 @@ class Front {
     setup_grid();
   }
 
-  FrontResult run() {
-    FrontResult result;
+  FrontReport run() {
     // Walls (open form) or placeholders (closed form) occupy nodes 0..2.
     for (std::int32_t w = 0; w < kFirstDisk; ++w) {
       add_node(0, 0, std::numeric_limits<double>::infinity());
     }
     std::int32_t cur = Open ? start_open() : start_closed();
     if (cur == kNone) {
-      return result;
+      return report_;
     }
     double r = draw();
     std::size_t skips = 0;
     std::int32_t lap = kNone;  // a periodic front: where the current run of inactive segments began
     while (front_.active() > 0 && skips <= front_.size() + 1) {
-      if (control_.stop(placed(), area_ * frame_.unit.inv_k * frame_.unit.inv_k, result)) {
+      if (control_.stop(placed(), area_ * frame_.unit.inv_k * frame_.unit.inv_k, report_)) {
         break;
       }
       if (!front_.segment_active(cur)) {
@@ -177,8 +176,8 @@ class Front {
     periodic_.drop(nodes_, kFirstDisk);
     move_out(nodes_, kFirstDisk, frame_.origin, frame_.unit.inv_k, out_);
     keep_in_cell(wrap_, std::span<Disk>(out_).subspan(first_out), region_);
-    result.fixed_bytes = fixed_bytes_;
-    return result;
+    report_.fixed_bytes = fixed_bytes_;
+    return report_;
   }
 
  private:
@@ -356,7 +355,7 @@ class Front {
 
   void block(std::int32_t s) {
     front_.retire(s);
-    ++stats_.blocked_segments;
+    ++report_.blocked_segments;
   }
 
   // ------------------------------------------------------------------------------------------
@@ -383,7 +382,7 @@ class Front {
     std::int32_t n = front_.next(c);
     int splices = 0;  // at most two per placement: each ends in a retry, and the loop must end
     for (;;) {
-      ++stats_.attempts;
+      ++report_.attempts;
       double px = 0;
       double py = 0;
       if (!tangent(c, n, r, px, py)) {
@@ -420,19 +419,7 @@ class Front {
         u = walk_.first_overlap(front_.prev(c), false, n, j, 0, angles, hits);
       }
       if (j == kNone && u == kNone && wrap_.any() && splices < 2) {
-        const std::int32_t d = far_front_disk(cand, c, n);
-        // (Not onto a retired segment k -> d: k -> n would be live again, and two segments could
-        // hand each other back and forth for ever, each splice undoing the other's retirement; the
-        // fill fuzzer found such a cell. So a splice never adds a live segment, and every
-        // placement that does not place a disk retires one.)
-        if (d != kNone && front_.segment_active(front_.prev(d))) {
-          // A periodic front meets itself, or another of its cycles, across free space: the
-          // segments c -> n and k -> d (k before d) become c -> d, retried, and k -> n, the entry of
-          // the cycle that a split leaves apart (FrontList::splice()).
-          const std::int32_t k = front_.prev(d);
-          front_.splice(c, k);
-          periodic_.keep_entry(n);
-          walk_.stop_turning();
+        if (const std::int32_t d = splice_across(cand, c, n); d != kNone) {
           ++splices;
           n = d;
           continue;
@@ -445,7 +432,7 @@ class Front {
         retired_ = c;
         return kNone;
       }
-      ++stats_.cuts;
+      ++report_.cuts;
       // The paper's index typos are corrected here (shared/design.md, "The paper, read closely"):
       // k is the disk before j, v the disk after u; in case (d) j is the subsequent and u the
       // preceding disk. The walks never return c or n, so each cut removes at least one disk.
@@ -459,6 +446,25 @@ class Front {
       }
       // Case (d) is both of the above. Retry on the intermediate segment c -> n.
     }
+  }
+
+  // A periodic front meets itself, or another of its cycles, across free space, where nothing on
+  // the window is in the way of the candidate on c -> n: the segments c -> n and k -> d (k before
+  // d, the front disk in the way) become c -> d, to be retried, and k -> n, the entry of the cycle
+  // that a split leaves apart (FrontList::splice()). Returns d, or kNone (nothing spliced).
+  // (Not onto a retired segment k -> d: k -> n would be live again, and two segments could hand
+  // each other back and forth for ever, each splice undoing the other's retirement; the fill
+  // fuzzer found such a cell. So a splice never adds a live segment, and every placement that does
+  // not place a disk retires one.)
+  std::int32_t splice_across(const Probe& cand, std::int32_t c, std::int32_t n) {
+    const std::int32_t d = far_front_disk(cand, c, n);
+    if (d == kNone || !front_.segment_active(front_.prev(d))) {
+      return kNone;
+    }
+    front_.splice(c, front_.prev(d));
+    periodic_.keep_entry(n);
+    walk_.stop_turning();
+    return d;
   }
 
   // ------------------------------------------------------------------------------------------
@@ -490,7 +496,7 @@ class Front {
       return false;
     }
     const VoidSeg v = voids_.pop(k);
-    ++stats_.attempts;
+    ++report_.attempts;
     double px = 0;
     double py = 0;
     if (!tangent(v.a, v.b, r, px, py)) {
@@ -498,7 +504,7 @@ class Front {
     }
     if (!overlaps_anything(probe(px, py, r), v.a, v.b)) {
       add_node(px, py, r);  // off the front: it only fills
-      ++stats_.void_fills;
+      ++report_.void_fills;
       return true;
     }
     if (cls > 0) {
@@ -544,7 +550,7 @@ class Front {
   const FrontSettings& req_;
   Rng& rng_;
   std::vector<Disk>& out_;
-  FillStats& stats_;
+  FrontReport report_;  // counters and why the run stopped: what run() returns
   RunFrame frame_;
   OverlapTest overlap_;
   Box box_;  // local: (0, 0) to (width, height)
@@ -577,13 +583,12 @@ class Front {
 
 }  // namespace
 
-FrontResult advance_front(const FrontSettings& settings, const Box& box, Rng& rng, std::vector<Disk>& out,
-                          FillStats& stats) {
+FrontReport advance_front(const FrontSettings& settings, const Box& box, Rng& rng, std::vector<Disk>& out) {
   if (settings.method == Method::open) {
-    Front<true> front(settings, box, rng, out, stats);
+    Front<true> front(settings, box, rng, out);
     return front.run();
   }
-  Front<false> front(settings, box, rng, out, stats);
+  Front<false> front(settings, box, rng, out);
   return front.run();
 }
 

@@ -10,16 +10,11 @@
 #include <vector>
 
 #include "common/release.hpp"
-#include "frontpack/fill.hpp"
+#include "frontpack/geometry.hpp"
+#include "frontpack/sizes.hpp"
+#include "generate/front_report.hpp"
 
 namespace frontpack::detail {
-
-struct FrontResult {
-  bool truncated = false;
-  bool cancelled = false;
-  bool over_memory = false;     ///< stopped before the disks would take more than memory_limit
-  std::size_t fixed_bytes = 0;  ///< what the run's grids took besides the disks (for the message)
-};
 
 /// The LimitError of a run that would take more memory than its memory_limit: "the run would need
 /// more than the memory limit of LIMIT bytes: WHAT; raise memory_limit (frontpack fill
@@ -40,17 +35,19 @@ class RunControl {
       : budget_(max_disks == 0 ? static_cast<std::size_t>(-1) : max_disks), max_disks_(budget_), tick_(tick) {}
 
   /// The disks may take `bytes` (what the memory limit leaves besides the grids): stop
-  /// (FrontResult::over_memory) once they would take more, if that comes before max_disks. They
-  /// are counted at peak_bytes_per_disk each, and stop at 15/16 of what that allows: the bound is
-  /// a measured one (the closed form's peak was 55-64 bytes per disk generated on the shapes), and
-  /// vectors growing by doubling (the voids) overshoot it for a moment.
-  void limit_memory(std::size_t bytes) noexcept { budget_ = std::min(budget_, bytes / 16 * 15 / peak_bytes_per_disk); }
+  /// (FrontReport::over_memory) once they would take more, if that comes before max_disks. They
+  /// are counted at `bytes_per_disk` each (FrontSettings::bytes_per_disk), and stop at 15/16 of
+  /// what that allows: the bound is a measured one (the closed form's peak was 55-64 bytes per
+  /// disk generated on the shapes), and vectors growing by doubling (the voids) overshoot it for a moment.
+  void limit_memory(std::size_t bytes, std::size_t bytes_per_disk) noexcept {
+    budget_ = std::min(budget_, bytes / 16 * 15 / bytes_per_disk);
+  }
   /// The disks that may be generated in total.
   [[nodiscard]] std::size_t budget() const noexcept { return budget_; }
 
   /// Whether to stop before placing another disk, `placed` disks having been generated in total
   /// and `area` being the sum of r^2 over this call's; `result` says why.
-  bool stop(std::size_t placed, double area, FrontResult& result) {
+  bool stop(std::size_t placed, double area, FrontReport& result) {
     if (placed >= budget_) {
       (placed >= max_disks_ ? result.truncated : result.over_memory) = true;
       return true;

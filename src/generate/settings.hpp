@@ -9,7 +9,10 @@
 #include <stop_token>
 
 #include "common/rng.hpp"
-#include "frontpack/fill.hpp"
+#include "frontpack/domain.hpp"
+#include "frontpack/geometry.hpp"
+#include "frontpack/method.hpp"
+#include "frontpack/sizes.hpp"
 #include "generate/scale.hpp"
 
 namespace frontpack::detail {
@@ -22,9 +25,12 @@ struct FrontSettings {
   double clearance = 0;        ///< absolute, > 0 (fill.cpp computes the default)
   std::size_t max_disks = 0;   ///< stop when this many disks have been generated in total
   /// Bytes the run may take (0: no limit): its grid (and the boundary front's wall lists), and
-  /// peak_bytes_per_disk per disk generated in total. A grid beyond it throws LimitError; the disks
-  /// stop short of it (FrontResult::over_memory).
+  /// bytes_per_disk per disk generated in total. A grid beyond it throws LimitError; the disks
+  /// stop short of it (FrontReport::over_memory).
   std::size_t memory_limit = 0;
+  /// What a disk generated is counted at against memory_limit: fill.cpp passes the documented
+  /// bound, peak_bytes_per_disk (frontpack/fill.hpp). > 0 whenever memory_limit is.
+  std::size_t bytes_per_disk = 0;
   bool fill_voids = true;  ///< try each new disk in the voids left behind the front first
   /// The box filled is a periodic cell (Domain::periodic()): the closed form wraps around it.
   Periodicity periodicity = Periodicity::none;

@@ -35,10 +35,11 @@ bool all_inside(const Domain& domain, const std::vector<Disk>& disks, std::vecto
 
 }  // namespace
 
-bool jam(const Domain& domain, const RadiusDistribution& radii, double clearance, std::size_t max_disks, Rng& rng,
-         std::vector<Disk>& disks, const std::function<bool(std::size_t, double)>& tick, const std::stop_token& stop,
-         FillStats& stats) {
+JamReport jam(const Domain& domain, const RadiusDistribution& radii, double clearance, std::size_t max_disks, Rng& rng,
+              std::vector<Disk>& disks, const std::function<bool(std::size_t, double)>& tick,
+              const std::stop_token& stop) {
   const auto t0 = std::chrono::steady_clock::now();
+  JamReport report;
   const Box box = domain.bbox();
   const EdgeDistanceIndex walls(domain, 2 * radii.max());
   RelaxationFrame frame;
@@ -68,21 +69,22 @@ bool jam(const Domain& domain, const RadiusDistribution& radii, double clearance
   while (k >= last && !disks.empty() && going && disks.size() < max_disks) {
     trial = disks;
     insertion.insert(trial, std::min(k, max_disks - disks.size()), radii, rng);
-    ++stats.jam_rounds;
+    ++report.rounds;
     const bool relaxed = relaxation.run(trial, kSteps, keep_going, stop);
-    stats.jam_steps += relaxation.iterations();
+    report.steps += relaxation.iterations();
     // A round that inserted nothing (a domain too thin for a candidate point) fails too, so that
     // k shrinks and the stage ends.
     if (relaxed && going && trial.size() > disks.size() && all_inside(domain, trial, inside)) {
-      stats.jam_inserted += trial.size() - disks.size();
+      report.inserted += trial.size() - disks.size();
       disks.swap(trial);
     } else {
       k /= 2;
     }
     going = going && keep_going();
   }
-  stats.seconds_jam = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  return going;
+  report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  report.cancelled = !going;
+  return report;
 }
 
 }  // namespace frontpack::detail

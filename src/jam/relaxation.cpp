@@ -124,18 +124,76 @@ double Relaxation::forces(const std::vector<Disk>& disks) {
   return worst;
 }
 
+void Relaxation::fire_update(Fire& fire) const {
+  double power = 0;
+  double vv = 0;
+  double ff = 0;
+  for (std::size_t i = 0; i < force_.size(); ++i) {
+    power += force_[i].x * velocity_[i].x + force_[i].y * velocity_[i].y;
+    vv += velocity_[i].x * velocity_[i].x + velocity_[i].y * velocity_[i].y;
+    ff += force_[i].x * force_[i].x + force_[i].y * force_[i].y;
+  }
+  fire.mixing = power > 0;
+  fire.scale = fire.mixing && ff > 0 ? fire.mix * std::sqrt(vv / ff) : 0;
+  fire.keep = 1 - fire.mix;
+  if (fire.mixing) {
+    if (++fire.power_steps > kPowerSteps) {
+      fire.dt = std::min(fire.dt * kGrow, kStepMax);
+      fire.mix *= kMixDecay;
+    }
+  } else {
+    fire.dt *= kCut;
+    fire.mix = kMix;
+    fire.power_steps = 0;
+  }
+}
+
+bool Relaxation::move_disks(std::vector<Disk>& disks, const Fire& fire, double max_step, double rebuild2) {
+  const Box& cell = frame_.cell;
+  const double dt = fire.dt;
+  bool rebuild = false;
+  for (std::size_t i = 0; i < disks.size(); ++i) {
+    Point& v = velocity_[i];
+    if (fire.mixing) {
+      v.x = fire.keep * v.x + fire.scale * force_[i].x;
+      v.y = fire.keep * v.y + fire.scale * force_[i].y;
+    } else {
+      v = Point{0, 0};
+    }
+    v.x += dt * force_[i].x;
+    v.y += dt * force_[i].y;
+    double sx = dt * v.x;
+    double sy = dt * v.y;
+    const double step2 = sx * sx + sy * sy;
+    if (step2 > max_step * max_step) {
+      // No disk jumps through a neighbour or a wall in one step.
+      const double k = max_step / std::sqrt(step2);
+      v.x *= k;
+      v.y *= k;
+      sx *= k;
+      sy *= k;
+    }
+    Point& c = disks[i].centre;
+    c.x += sx;
+    c.y += sy;
+    c = wrap_.into_cell(c, cell);  // (kept in the cell on a periodic axis)
+    double mx = c.x - built_at_[i].x;
+    double my = c.y - built_at_[i].y;
+    wrap_difference(mx, my);
+    rebuild = rebuild || mx * mx + my * my > rebuild2;
+  }
+  return rebuild;
+}
+
 bool Relaxation::run(std::vector<Disk>& disks, std::size_t max_iterations, const std::function<bool()>& keep_going,
                      const std::stop_token& stop) {
   const std::size_t n = disks.size();
   force_.assign(n, Point{0, 0});
   velocity_.assign(n, Point{0, 0});
   build_lists(disks);
-  double dt = kStep0;
-  double mix = kMix;
-  std::size_t power_steps = 0;
+  Fire fire{kStep0, kMix};
   const double max_step = 0.1 * frame_.rmin;
   const double rebuild2 = 0.25 * skin_ * skin_;
-  const Box& cell = frame_.cell;
   double last_window = 0;
   for (iterations_ = 0; iterations_ < max_iterations; ++iterations_) {
     throw_if_stopped(stop);
@@ -155,61 +213,10 @@ bool Relaxation::run(std::vector<Disk>& disks, std::size_t max_iterations, const
       }
       last_window = w;
     }
-    double power = 0;
-    double vv = 0;
-    double ff = 0;
-    for (std::size_t i = 0; i < n; ++i) {
-      power += force_[i].x * velocity_[i].x + force_[i].y * velocity_[i].y;
-      vv += velocity_[i].x * velocity_[i].x + velocity_[i].y * velocity_[i].y;
-      ff += force_[i].x * force_[i].x + force_[i].y * force_[i].y;
-    }
     // FIRE's mixing of the velocities (with this step's mix), then its new time step and mix; the
-    // loop below mixes each velocity and moves its disk with that time step.
-    const bool mixing = power > 0;
-    const double scale = mixing && ff > 0 ? mix * std::sqrt(vv / ff) : 0;
-    const double keep = 1 - mix;
-    if (mixing) {
-      if (++power_steps > kPowerSteps) {
-        dt = std::min(dt * kGrow, kStepMax);
-        mix *= kMixDecay;
-      }
-    } else {
-      dt *= kCut;
-      mix = kMix;
-      power_steps = 0;
-    }
-    bool rebuild = false;
-    for (std::size_t i = 0; i < n; ++i) {
-      Point& v = velocity_[i];
-      if (mixing) {
-        v.x = keep * v.x + scale * force_[i].x;
-        v.y = keep * v.y + scale * force_[i].y;
-      } else {
-        v = Point{0, 0};
-      }
-      v.x += dt * force_[i].x;
-      v.y += dt * force_[i].y;
-      double sx = dt * v.x;
-      double sy = dt * v.y;
-      const double step2 = sx * sx + sy * sy;
-      if (step2 > max_step * max_step) {
-        // No disk jumps through a neighbour or a wall in one step.
-        const double k = max_step / std::sqrt(step2);
-        v.x *= k;
-        v.y *= k;
-        sx *= k;
-        sy *= k;
-      }
-      Point& c = disks[i].centre;
-      c.x += sx;
-      c.y += sy;
-      c = wrap_.into_cell(c, cell);  // (kept in the cell on a periodic axis)
-      double mx = c.x - built_at_[i].x;
-      double my = c.y - built_at_[i].y;
-      wrap_difference(mx, my);
-      rebuild = rebuild || mx * mx + my * my > rebuild2;
-    }
-    if (rebuild) {
+    // move mixes each velocity and moves its disk with that time step.
+    fire_update(fire);
+    if (move_disks(disks, fire, max_step, rebuild2)) {
       build_lists(disks);
     }
   }

@@ -16,8 +16,8 @@
 #include "domain/edge_distance.hpp"
 #include "frontpack/domain.hpp"
 #include "frontpack/geometry.hpp"
-#include "periodic/wrap.hpp"
 #include "jam/disk_cells.hpp"
+#include "periodic/wrap.hpp"
 
 namespace frontpack::detail {
 
@@ -75,6 +75,24 @@ class Relaxation {
   void build_lists(const std::vector<Disk>& disks);
   // Forces into force_; returns the largest overlap beyond half the gap (<= 0: done).
   double forces(const std::vector<Disk>& disks);
+
+  // FIRE's state over a run: the time step, the mix and the steps of positive power since the
+  // power was last negative; and this step's mixing of the velocities (mixing, scale, keep).
+  struct Fire {
+    double dt;
+    double mix;
+    std::size_t power_steps = 0;
+    bool mixing = false;
+    double scale = 0;
+    double keep = 0;
+  };
+  // This step's mixing, from the power F.v with the mix as it stands, then FIRE's new time step
+  // and mix.
+  void fire_update(Fire& fire) const;
+  // Mixes each velocity and moves its disk by one time step, at most max_step (kept in the cell on
+  // a periodic axis). Returns whether a disk has moved farther than sqrt(rebuild2) since the lists
+  // were built.
+  bool move_disks(std::vector<Disk>& disks, const Fire& fire, double max_step, double rebuild2);
 
   RelaxationFrame frame_;
   PeriodicWrap wrap_;  // the minimum image and the wrap into the cell, as the fronts have them

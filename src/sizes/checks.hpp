@@ -8,7 +8,8 @@
 #include <utility>
 
 #include "common/format.hpp"
-#include "frontpack/fill.hpp"
+#include "frontpack/errors.hpp"
+#include "frontpack/sizes.hpp"
 #include "sizes/normal.hpp"
 
 namespace frontpack::detail {

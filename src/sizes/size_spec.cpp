@@ -15,7 +15,8 @@
 #include "common/numbers.hpp"
 #include "common/read_file.hpp"
 #include "common/text.hpp"
-#include "frontpack/fill.hpp"
+#include "frontpack/errors.hpp"
+#include "frontpack/sizes.hpp"
 
 namespace frontpack {
 

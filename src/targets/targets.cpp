@@ -57,7 +57,6 @@ Packing fill_with_targets(const Domain& domain, const FillOptions& options, cons
     }
     const std::size_t outside = p.disks.size() - kept;
     p.disks.resize(kept);
-    p.certificate.culled += outside;
     TargetReport t = p.target.value_or(TargetReport{});
     t.height = *options.height;
     t.area_filled = part.area();

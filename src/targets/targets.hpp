@@ -22,7 +22,10 @@ using PlainFill = std::function<Packing(const Domain&, const FillOptions&, std::
 [[nodiscard]] bool has_target(const FillOptions& options) noexcept;
 
 /// Fills below the level (if any), to the fraction or to the count (at most one of the two), with
-/// options that check_options() has accepted.
+/// options that check_options() has accepted. Returns the plain fill's packing with the targets' disks
+/// and their TargetReport in Packing::target; the disks culled against the unclipped domain are
+/// counted there (outside_original), not in the certificate, which is the certifier's (fill() adds
+/// them to it).
 [[nodiscard]] Packing fill_with_targets(const Domain& domain, const FillOptions& options, const PlainFill& plain);
 
 /// The fill to a fraction (target_fraction.cpp): options.fraction set, no height, no count.

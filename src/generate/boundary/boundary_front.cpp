@@ -27,6 +27,7 @@
 #include "generate/boundary/pocket.hpp"
 #include "generate/boundary/rules.hpp"
 #include "generate/boundary/seeding.hpp"
+#include "generate/boundary/slide.hpp"
 #include "generate/boundary/wall_index.hpp"
 #include "generate/boundary/walls.hpp"
 #include "generate/run_control.hpp"
@@ -43,17 +44,16 @@ constexpr std::int32_t kNone = kNoElement;
 // them every gap a drawn radius did not fit was dropped, and the packing kept large empty areas).
 class BoundaryFront {
  public:
-  BoundaryFront(const FrontSettings& req, const Polygon& polygon, Rng& rng, std::vector<Disk>& out, FillStats& stats)
+  BoundaryFront(const FrontSettings& req, const Polygon& polygon, Rng& rng, std::vector<Disk>& out)
       : req_(req),
         rng_(rng),
         out_(out),
-        stats_(stats),
         control_(req.max_disks, req.tick),
         out_before_(out.size()),
         frame_(*req.radii, req.clearance, outer_box(polygon)),
         cell_(outer_box(polygon)),
         elements_(frame_),
-        obstacles_(frame_, stats) {
+        obstacles_(frame_, report_.exact_checks) {
     box_ = Box{-frame_.clearance, -frame_.clearance, frame_.width + frame_.clearance, frame_.height + frame_.clearance};
     classes_ = RadiusClasses<kClasses>(frame_.rmin, frame_.rmax);
     close_below_ = close_below(frame_.rmin, frame_.rmax);
@@ -83,87 +83,120 @@ class BoundaryFront {
     }
     if (req_.memory_limit != 0) {
       budget.check(fixed_bytes_, "the grid and the lists of the walls near its cells");
-      control_.limit_memory(req_.memory_limit - fixed_bytes_);
+      control_.limit_memory(req_.memory_limit - fixed_bytes_, req_.bytes_per_disk);
     }
   }
 
-  FrontResult run() {
-    FrontResult result;
+  FrontReport run() {
     double r = draw();
     int cls = class_of(r);  // r's void class (r stays until it is placed)
     for (;;) {
-      if (control_.stop(placed(), area_ * frame_.unit.inv_k * frame_.unit.inv_k, result)) {
+      if (control_.stop(placed(), area_ * frame_.unit.inv_k * frame_.unit.inv_k, report_)) {
         break;
       }
       Gap g{kNone, kNone};
-      // Voids first, those on a rough wall before the others, the tightest class whose radii all
-      // exceed r, the most recent void in it.
-      int k = any_rough_ ? voids_[1].first_above(cls) : -1;
-      std::size_t side = 1;
-      if (k < 0) {
-        k = voids_[0].first_above(cls);
-        side = 0;
-      }
-      if (k >= 0) {
-        g = voids_[side].pop(k);
-      } else if (wall_head_ < wall_fifo_.size()) {
-        g = wall_fifo_[wall_head_++];  // the first layer along every wall comes first
-      } else if (!fifo_empty()) {
-        g = fifo_[head_++];
-        if (head_ > 4096 && head_ * 2 > fifo_.size()) {  // drop the consumed half (amortised O(1))
-          fifo_.erase(fifo_.begin(), fifo_.begin() + static_cast<std::ptrdiff_t>(head_));
-          head_ = 0;
+      bool in_void = false;
+      const Next next = next_gap(cls, g, in_void);
+      if (next == Next::none) {
+        const Done d = front_done(r);
+        if (d == Done::end) {
+          break;
         }
-        if (const std::int32_t o = overtaker(g); o != kNone) {
-          push_void(g, kClasses - 1, o);
-          continue;
-        }
-      } else {
-        // The front is done and no void can take r. If the walls could not start a front (a
-        // boundary rougher than the smallest disk: nothing fits in its corners) and the polygon
-        // is far from full, a seed pair of disks starts one inside, growing outwards. Otherwise
-        // r is skipped while voids are left, up to one radius in kSkipPer placed, and then the
-        // run ends. (Skipping without a bound fills every void, but only by distorting the size
-        // distribution towards small radii: uniform 1:10 packed 0.894 with a KS by area of 0.028.)
-        if (seed(r)) {
-          area_ += r * r;
+        if (d == Done::next_radius) {
           r = draw();
           cls = class_of(r);
-          continue;
         }
-        if (!cavities_searched_) {
-          cavities_searched_ = true;
-          if (find_cavities()) {
-            continue;
-          }
-        }
-        if (skipped_ < (placed() - out_before_) / kSkipPer && !(voids_[0].empty() && voids_[1].empty())) {
-          // The voids left where the fronts met last (a seam of 0.71 against 0.87 around) take
-          // the radii that fit them; a radius that fits none is skipped, up to 1 in kSkipPer.
-          ++skipped_;
-          ++stats_.skipped_radii;
-          r = draw();
-          cls = class_of(r);
-          continue;
-        }
-        break;
+        continue;
       }
-      if (const GapTry t = try_gap(g, r, k >= 0); t.placed) {
-        area_ += r * r;
-        r = draw();
-        cls = class_of(r);
-      } else if (cls > 0 && !t.hopeless) {
-        // r did not fit: the gap may still take a smaller disk, at most as large as the pocket
-        // between its elements and the disk in the way.
-        if (t.capped) {
-          keep_void(g, cls, t.blocker, t.cap);
-        } else {
-          push_void(g, cls, t.blocker);
-        }
+      if (next == Next::gap) {
+        try_and_keep(g, in_void, r, cls);
       }
     }
-    // The front, the voids and the grid are done with: free them before the output grows (peak
-    // memory: the nodes and the output are then all that is left).
+    finish();
+    return report_;
+  }
+
+ private:
+  enum class Next : std::uint8_t { gap, overtaken, none };
+  // The gap to try r of class cls in next: voids first, those on a rough wall before the others,
+  // the tightest class whose radii all exceed r, the most recent void in it (in_void); then the
+  // first layer along every wall; then the front. An overtaken front gap is kept as a void
+  // (overtaken). none: the front is done and no void can take r.
+  Next next_gap(int cls, Gap& g, bool& in_void) {
+    int k = any_rough_ ? voids_[1].first_above(cls) : -1;
+    std::size_t side = 1;
+    if (k < 0) {
+      k = voids_[0].first_above(cls);
+      side = 0;
+    }
+    in_void = k >= 0;
+    if (k >= 0) {
+      g = voids_[side].pop(k);
+    } else if (wall_head_ < wall_fifo_.size()) {
+      g = wall_fifo_[wall_head_++];  // the first layer along every wall comes first
+    } else if (!fifo_empty()) {
+      g = fifo_[head_++];
+      if (head_ > 4096 && head_ * 2 > fifo_.size()) {  // drop the consumed half (amortised O(1))
+        fifo_.erase(fifo_.begin(), fifo_.begin() + static_cast<std::ptrdiff_t>(head_));
+        head_ = 0;
+      }
+      if (const std::int32_t o = overtaker(g); o != kNone) {
+        push_void(g, kClasses - 1, o);
+        return Next::overtaken;
+      }
+    } else {
+      return Next::none;
+    }
+    return Next::gap;
+  }
+
+  enum class Done : std::uint8_t { next_radius, same_radius, end };
+  // The front is done and no void can take r. If the walls could not start a front (a boundary
+  // rougher than the smallest disk: nothing fits in its corners) and the polygon is far from full,
+  // a seed pair of disks starts one inside, growing outwards. Otherwise r is skipped while voids
+  // are left, up to one radius in kSkipPer placed, and then the run ends. (Skipping without a
+  // bound fills every void, but only by distorting the size distribution towards small radii:
+  // uniform 1:10 packed 0.894 with a KS by area of 0.028.)
+  Done front_done(double r) {
+    if (seed(r)) {
+      area_ += r * r;
+      return Done::next_radius;
+    }
+    if (!cavities_searched_) {
+      cavities_searched_ = true;
+      if (find_cavities()) {
+        return Done::same_radius;
+      }
+    }
+    if (skipped_ < (placed() - out_before_) / kSkipPer && !(voids_[0].empty() && voids_[1].empty())) {
+      // The voids left where the fronts met last (a seam of 0.71 against 0.87 around) take
+      // the radii that fit them; a radius that fits none is skipped, up to 1 in kSkipPer.
+      ++skipped_;
+      ++report_.skipped_radii;
+      return Done::next_radius;
+    }
+    return Done::end;
+  }
+
+  // Tries r at gap g; placed, the next radius is drawn, else the gap may still take a smaller
+  // disk, at most as large as the pocket between its elements and the disk in the way.
+  void try_and_keep(Gap g, bool in_void, double& r, int& cls) {
+    if (const GapTry t = try_gap(g, r, in_void); t.placed) {
+      area_ += r * r;
+      r = draw();
+      cls = class_of(r);
+    } else if (cls > 0 && !t.hopeless) {
+      if (t.capped) {
+        keep_void(g, cls, t.blocker, t.cap);
+      } else {
+        push_void(g, cls, t.blocker);
+      }
+    }
+  }
+
+  // The front, the voids and the grid are done with: free them before the output grows (peak
+  // memory: the nodes and the output are then all that is left).
+  void finish() {
     release(fifo_);
     release(wall_fifo_);
     for (auto& side : voids_) {
@@ -172,11 +205,9 @@ class BoundaryFront {
     elements_.release_links();
     obstacles_.release();
     elements_.move_out(frame_.origin, frame_.unit.inv_k, out_, cell_);
-    result.fixed_bytes = fixed_bytes_;
-    return result;
+    report_.fixed_bytes = fixed_bytes_;
   }
 
- private:
   [[nodiscard]] std::size_t placed() const noexcept {
     return elements_.size() - static_cast<std::size_t>(elements_.corner_count()) - elements_.images() + out_before_;
   }
@@ -272,7 +303,7 @@ class BoundaryFront {
     for (const Gap& g : found) {
       keep_void(g, kClasses - 1, kNone, -1);
     }
-    stats_.cavities += found.size();
+    report_.cavities += found.size();
     return !found.empty();
   }
 
@@ -335,49 +366,6 @@ class BoundaryFront {
   // ------------------------------------------------------------------------------------------
   // Placing a disk of radius r in gap g.
 
-  // The ring wall e belongs to.
-  [[nodiscard]] std::size_t ring_of(std::int32_t e) const noexcept {
-    const std::size_t i = wall_index(e);
-    return static_cast<std::size_t>(std::upper_bound(ring_first_.begin(), ring_first_.end(), i) - ring_first_.begin()) -
-           1;
-  }
-
-  // A candidate touching a wall and a node whose foot on the wall lies beyond the edge: along a
-  // gently turning boundary (a curve divided into many short edges) it touches the next wall
-  // instead. It is recomputed against the wall nearest to it, if that wall is on the same ring
-  // and turned by less than kSlideTurn from the first, a few times over; otherwise it is left as
-  // it is, for supported_by() to refuse.
-  void slide(std::int32_t& x, std::int32_t& y, double r, double& px, double& py) {
-    for (int k = 0; k < 4; ++k) {
-      if (is_wall(x) == is_wall(y)) {
-        return;
-      }
-      const bool wall_first = is_wall(x);
-      const std::int32_t w = wall_first ? x : y;
-      if (elements_.supported_by(w, px, py)) {
-        return;
-      }
-      double d2 = distance2(elements_.wall(w), px, py);
-      const std::int32_t e = obstacles_.nearest(px, py, d2, w);
-      if (e == kNone || e == w || ring_of(e) != ring_of(w)) {
-        return;
-      }
-      const Wall& a = elements_.wall(w);
-      const Wall& b = elements_.wall(e);
-      if (a.tx * b.tx + a.ty * b.ty < kCosSlideTurn) {
-        return;
-      }
-      double qx = 0;
-      double qy = 0;
-      if (!(wall_first ? tangent(e, y, r, qx, qy) : tangent(x, e, r, qx, qy))) {
-        return;
-      }
-      (wall_first ? x : y) = e;
-      px = qx;
-      py = qy;
-    }
-  }
-
   // Whether the pocket behind parents x and y (disks or reflex vertices) that a move (cases
   // (b)-(d)) brought together is worth keeping as a void. Behind them lies the element the move
   // replaced; their pocket rarely takes a disk, and beyond 4 rmin almost never: on the 3 x 3
@@ -406,7 +394,7 @@ class BoundaryFront {
     std::int32_t y = g.b;
     double px = 0;
     double py = 0;
-    ++stats_.attempts;
+    ++report_.attempts;
     if (!tangent(x, y, r, px, py)) {
       // No disk this small touches both (too far apart, or one holds the other, or parallel
       // walls): no smaller one does either. The gap is not kept as a void for smaller radii,
@@ -418,7 +406,7 @@ class BoundaryFront {
     std::int32_t replaced = kNone;  // the parent the last move replaced
     int moves = walled ? (in_void ? kVoidMoves : kWallMoves) : kMoves;
     for (int move = 0; move <= moves; ++move) {
-      slide(x, y, r, px, py);
+      slide(elements_, obstacles_, ring_first_, x, y, r, px, py);
       if (wrap().any()) {
         // A periodic cell: the candidate brought into it (where its images' neighbours are).
         px = wrap().wrap_x(px);
@@ -517,7 +505,7 @@ class BoundaryFront {
     } else if (is_wall(y) && !is_wall(x)) {
       push_void(Gap{y, n}, kClasses - 1, x);
     }
-    stats_.void_fills += in_void ? 1U : 0U;
+    report_.void_fills += in_void ? 1U : 0U;
   }
 
   // Moves candidate (px, py) of radius r, in the way of d, to touch d and one of its parents x and
@@ -526,14 +514,14 @@ class BoundaryFront {
                      std::int32_t& replaced) {
     // Cases (b)-(d) by geometry: touch d and one of the parents instead, whichever of the
     // two positions is nearer the first.
-    ++stats_.cuts;
+    ++report_.cuts;
     double ax = 0;
     double ay = 0;
     double bx = 0;
     double by = 0;
     const bool ok_a = tangent(x, d, r, ax, ay);
     const bool ok_b = tangent(d, y, r, bx, by);
-    ++stats_.attempts;
+    ++report_.attempts;
     if (!ok_a && !ok_b) {
       return false;
     }
@@ -558,7 +546,7 @@ class BoundaryFront {
   const FrontSettings& req_;
   Rng& rng_;
   std::vector<Disk>& out_;
-  FillStats& stats_;
+  FrontReport report_;  // counters and why the run stopped: what run() returns
   RunControl control_;
   std::size_t out_before_;  // out_.size() until the run moves the nodes out (placed())
   RunFrame frame_;
@@ -589,9 +577,8 @@ class BoundaryFront {
 
 }  // namespace
 
-FrontResult advance_boundary(const FrontSettings& settings, const Polygon& polygon, Rng& rng, std::vector<Disk>& out,
-                             FillStats& stats) {
-  BoundaryFront front(settings, polygon, rng, out, stats);
+FrontReport advance_boundary(const FrontSettings& settings, const Polygon& polygon, Rng& rng, std::vector<Disk>& out) {
+  BoundaryFront front(settings, polygon, rng, out);
   return front.run();
 }
 

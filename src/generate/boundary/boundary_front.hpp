@@ -12,8 +12,8 @@
 
 #include "common/rng.hpp"
 #include "frontpack/domain.hpp"
-#include "frontpack/fill.hpp"
-#include "generate/run_control.hpp"
+#include "frontpack/geometry.hpp"
+#include "generate/front_report.hpp"
 #include "generate/settings.hpp"
 
 namespace frontpack::detail {
@@ -21,8 +21,8 @@ namespace frontpack::detail {
 /// Fills the polygon from its boundary inwards, appending the disks to `out` in generation order.
 /// The disks never overlap one another (decided exactly) and lie inside the polygon up to
 /// floating-point rounding far below the clearance (the certifier decides containment exactly).
-/// `polygon` is normalised: outer ring anticlockwise, holes clockwise.
-FrontResult advance_boundary(const FrontSettings& settings, const Polygon& polygon, Rng& rng, std::vector<Disk>& out,
-                             FillStats& stats);
+/// `polygon` is normalised: outer ring anticlockwise, holes clockwise. Returns the run's counters
+/// and why it stopped.
+FrontReport advance_boundary(const FrontSettings& settings, const Polygon& polygon, Rng& rng, std::vector<Disk>& out);
 
 }  // namespace frontpack::detail

@@ -13,8 +13,8 @@ std::size_t Obstacles::set_up(const std::vector<Wall>& walls, const RunFrame& fr
   // (4 bytes a cell) and 12 bytes a block of cells; the (cell, wall) pairs, 16 bytes each while
   // they are listed (8, and as much again while the list moves or is copied grouped), then 12
   // (the grouped copy and the lists kept) with 1,028 bytes a walled block; then
-  // peak_bytes_per_disk per disk. On a sliver 1e-7 high these lists, sized by the grid's cells
-  // and not by the disks, were most of the run's memory (565 MB for 1.1M disks).
+  // FrontSettings::bytes_per_disk per disk. On a sliver 1e-7 high these lists, sized by the
+  // grid's cells and not by the disks, were most of the run's memory (565 MB for 1.1M disks).
   const std::size_t need = grid_.cells() * sizeof(std::int32_t) + WallIndex::block_bytes(grid_);
   budget.check(need, "the grid over the polygon's box has " + std::to_string(grid_.cells()) + " cells");
   head_cell_.assign(grid_.cells(), kNoElement);

@@ -35,7 +35,9 @@ class Obstacles {
  public:
   static constexpr std::uint32_t kWallList = 16;  // a cell with more walls than this asks the wall tree
 
-  Obstacles(const RunFrame& frame, FillStats& stats) noexcept : overlap_(frame.clearance, stats), rmax_(frame.rmax) {}
+  /// `exact_checks` counts the overlap tests the exact predicate decides (FrontReport).
+  Obstacles(const RunFrame& frame, std::size_t& exact_checks) noexcept
+      : overlap_(frame.clearance, exact_checks), rmax_(frame.rmax) {}
 
   /// Builds the grid over the frame's box and the lists of the walls near its cells; checks them
   /// against the memory limit. Returns the bytes they keep for the run.
