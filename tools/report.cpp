@@ -8,6 +8,22 @@
 
 namespace frontpack_tool {
 
+// Each result struct's field list names every member once (frontpack/fields.hpp): a member added
+// without its field stops the build here, before the JSON or Python could miss it.
+static_assert(frontpack::fields_complete<frontpack::Certificate>());
+static_assert(frontpack::fields_complete<frontpack::CertifyReport>());
+static_assert(frontpack::fields_complete<frontpack::TargetReport>());
+static_assert(frontpack::fields_complete<frontpack::Progress>());
+static_assert(frontpack::fields_complete<frontpack::FillStats>());
+static_assert(frontpack::fields_complete<frontpack::SizeClassRow>());
+static_assert(frontpack::fields_complete<frontpack::HistogramBin>());
+static_assert(frontpack::fields_complete<frontpack::SizeStats>());
+static_assert(frontpack::fields_complete<frontpack::EmptyCircle>());
+static_assert(frontpack::fields_complete<frontpack::HoleCount>());
+static_assert(frontpack::fields_complete<frontpack::CoverageBin>());
+static_assert(frontpack::fields_complete<frontpack::CellCoverage>());
+static_assert(frontpack::fields_complete<frontpack::PackingStats>());
+
 double seconds_since(Clock::time_point t0) {
   return std::chrono::duration<double>(Clock::now() - t0).count();
 }
