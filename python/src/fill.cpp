@@ -122,18 +122,8 @@ PyPacking run(const Domain& domain, FillOptions options, const py::object& progr
                    target_dict(packing.target)};
 }
 
-}  // namespace
-
-void bind_fill(py::module_& m) {
-  py::class_<StopSource>(m, "StopSource",
-                         "Cancels a fill from another thread: pass it as fill(..., stop=s) and call "
-                         "s.request_stop(); the fill raises CancelledError within milliseconds.")
-      .def(py::init<>())
-      .def(
-          "request_stop", [](StopSource& s) { return s.source.request_stop(); },
-          "Requests the stop; True if this call made the request.")
-      .def_property_readonly("stop_requested", [](const StopSource& s) { return s.source.stop_requested(); });
-
+// Progress, FillStats and Packing: the classes a fill hands back.
+void bind_results(py::module_& m) {
   py::class_<Progress> progress_class(m, "Progress", "A run's progress, passed to fill's progress callback.");
   bind_fields(progress_class);
   progress_class.def("__repr__", [](const Progress& p) {
@@ -164,6 +154,21 @@ void bind_fill(py::module_& m) {
                std::to_string(p.certificate.generated) + " generated, " + std::to_string(p.certificate.culled) +
                " culled, " + std::to_string(p.certificate.dropped) + " dropped)>";
       });
+}
+
+}  // namespace
+
+void bind_fill(py::module_& m) {
+  py::class_<StopSource>(m, "StopSource",
+                         "Cancels a fill from another thread: pass it as fill(..., stop=s) and call "
+                         "s.request_stop(); the fill raises CancelledError within milliseconds.")
+      .def(py::init<>())
+      .def(
+          "request_stop", [](StopSource& s) { return s.source.request_stop(); },
+          "Requests the stop; True if this call made the request.")
+      .def_property_readonly("stop_requested", [](const StopSource& s) { return s.source.stop_requested(); });
+
+  bind_results(m);
 
   m.def(
       "_fill",
