@@ -17,7 +17,7 @@
 // from its name carries the key (.json("key")), one that the JSON puts in a sub-object carries
 // its name (.in("group")). fields_complete<S>() holds when the list has one entry per member
 // (aggregate_members<S>() counts them), so that a member added without a field fails to compile
-// where that is asserted (tests/result_fields_test.cpp).
+// where that is asserted (tools/report.cpp; tests/result_fields_test.cpp checks the JSON).
 #pragma once
 
 #include <cstddef>
