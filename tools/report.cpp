@@ -8,6 +8,22 @@
 
 namespace frontpack_tool {
 
+// Each result struct's field list names every member once (frontpack/fields.hpp): a member added
+// without its field stops the build here, before the JSON or Python could miss it.
+static_assert(frontpack::fields_complete<frontpack::Certificate>());
+static_assert(frontpack::fields_complete<frontpack::CertifyReport>());
+static_assert(frontpack::fields_complete<frontpack::TargetReport>());
+static_assert(frontpack::fields_complete<frontpack::Progress>());
+static_assert(frontpack::fields_complete<frontpack::FillStats>());
+static_assert(frontpack::fields_complete<frontpack::SizeClassRow>());
+static_assert(frontpack::fields_complete<frontpack::HistogramBin>());
+static_assert(frontpack::fields_complete<frontpack::SizeStats>());
+static_assert(frontpack::fields_complete<frontpack::EmptyCircle>());
+static_assert(frontpack::fields_complete<frontpack::HoleCount>());
+static_assert(frontpack::fields_complete<frontpack::CoverageBin>());
+static_assert(frontpack::fields_complete<frontpack::CellCoverage>());
+static_assert(frontpack::fields_complete<frontpack::PackingStats>());
+
 double seconds_since(Clock::time_point t0) {
   return std::chrono::duration<double>(Clock::now() - t0).count();
 }
@@ -38,93 +54,82 @@ Json domain_json(const std::string& source, const frontpack::Domain& domain) {
 
 namespace {
 
-Json sizes_json(const frontpack::SizeStats& s) {
-  Json j{{"count", s.count},
-         {"min", s.rmin},
-         {"max", s.rmax},
-         {"mean", s.mean},
-         {"sd", s.sd},
-         {"median_by_number", s.median_number},
-         {"median_by_area", s.median_area}};
-  if (s.compared) {
-    j["requested"] = s.requested;
-    j["ks_by_number"] = s.ks_number;
-    j["ks_by_area"] = s.ks_area;
+// The summary's additions to the field lists' JSON (json_fields.hpp), each named here: the
+// request's comparison only with a request; the largest empty circle only when computed, its
+// centre also as "x" and "y" and its radius in rmax; each profile bin's ends in rmax; the cell
+// map to 6 decimals (a cell of 8 rmax holds some 50 disks: its coverage is not known closer);
+// without walls (a cell periodic in x and y) the band's figures null.
+void adjust_sizes_json(Json& j, const frontpack::SizeStats& s) {
+  if (!s.compared) {
+    for (const char* key : {"requested", "ks_by_number", "ks_by_area", "ks_by_number_at", "ks_by_area_at"}) {
+      j.erase(key);
+    }
   }
-  return j;
 }
 
-void add_void_json(Json& j, const frontpack::PackingStats& s) {
+void adjust_void_json(Json& j, const frontpack::PackingStats& s) {
   const frontpack::EmptyCircle& e = s.largest_empty_circle;
   if (e.computed) {
-    j["largest_empty_circle"] =
-        Json{{"radius", e.radius},
-             {"radius_upper", e.radius_upper},
-             {"x", e.centre.x},
-             {"y", e.centre.y},
-             {"radius_over_rmax", s.sizes.rmax > 0 ? Json(e.radius / s.sizes.rmax) : Json(nullptr)}};
+    Json& circle = j["largest_empty_circle"];
+    circle["x"] = e.centre.x;
+    circle["y"] = e.centre.y;
+    circle["radius_over_rmax"] = s.sizes.rmax > 0 ? Json(e.radius / s.sizes.rmax) : Json(nullptr);
+  } else {
+    j.erase("largest_empty_circle");
   }
-  Json holes = Json::array();
-  for (const frontpack::HoleCount& h : s.holes) {
-    holes.push_back(Json{{"radius", h.radius}, {"count", h.count}});
+  Json& profile = j["coverage_profile"];
+  for (std::size_t k = 0; k < s.coverage_profile.size(); ++k) {
+    const frontpack::CoverageBin& b = s.coverage_profile[k];
+    profile[k]["from_rmax"] = b.from / s.coverage_unit;
+    profile[k]["to_rmax"] = b.to / s.coverage_unit;  // infinity, written null, for the last bin
   }
-  j["holes"] = holes;
-  Json profile = Json::array();
-  for (const frontpack::CoverageBin& b : s.coverage_profile) {
-    const bool last = std::isinf(b.to);
-    profile.push_back(Json{{"from", b.from},
-                           {"to", last ? Json(nullptr) : Json(b.to)},
-                           {"from_rmax", b.from / s.coverage_unit},
-                           {"to_rmax", last ? Json(nullptr) : Json(b.to / s.coverage_unit)},
-                           {"fraction", b.fraction},
-                           {"error", b.error},
-                           {"samples", b.samples}});
-  }
-  j["coverage_profile"] = profile;
-  const frontpack::CellCoverage& c = s.cell_coverage;
-  // The map row by row from below, null where a cell is not wholly in the interior, each value
-  // to 6 decimals (a cell of 8 rmax holds some 50 disks: its coverage is not known closer).
   Json map = Json::array();
-  for (const double v : c.map) {
+  for (const double v : s.cell_coverage.map) {
     map.push_back(std::isnan(v) ? Json(nullptr) : Json(std::round(v * 1e6) / 1e6));
   }
-  j["cell_coverage"] = Json{{"cell_side", c.cell_side},
-                            {"cells", c.cells},
-                            {"p1", c.p1},
-                            {"p5", c.p5},
-                            {"p50", c.p50},
-                            {"sd", c.sd},
-                            {"origin", Json::array({c.origin.x, c.origin.y})},
-                            {"nx", c.nx},
-                            {"ny", c.ny},
-                            {"map", std::move(map)}};
+  j["cell_coverage"]["map"] = std::move(map);
 }
 
 }  // namespace
 
 Json stats_json(const frontpack::PackingStats& s) {
-  // Without walls (a cell periodic in x and y) there is no band: its figures are null.
-  const auto band = [&s](double v) { return s.walls ? Json(v) : Json(nullptr); };
-  Json j{{"packing_fraction", s.packing_fraction},
-         {"interior_fraction", s.interior_fraction},
-         {"interior_fraction_error", s.interior_error},
-         {"walls", s.walls},
-         {"band_fraction", band(s.band_fraction)},
-         {"band_fraction_error", band(s.band_error)},
-         {"band_width", s.band_width},
-         {"void_ratio", std::isfinite(s.void_ratio) ? Json(s.void_ratio) : Json(nullptr)},
-         {"mean_coordination", s.mean_coordination},
-         {"interior_coordination", s.interior_coordination},
-         {"contacts", s.contacts},
-         {"wall_contacts", s.wall_contacts},
-         {"rattlers", s.rattlers},
-         {"contact_gap", s.contact_gap},
-         {"band_disks", s.band_disks},
-         {"band_median_by_area", band(s.band_median_area)},
-         {"inside_median_by_area", s.inside_median_area},
-         {"segregation_ks_by_area", band(s.segregation_ks_area)},
-         {"radius", sizes_json(s.sizes)}};
-  add_void_json(j, s);
+  Json j = fields_json(s);
+  if (!s.walls) {
+    for (const char* key : {"band_fraction", "band_fraction_error", "band_median_by_area", "segregation_ks_by_area"}) {
+      j[key] = nullptr;
+    }
+  }
+  adjust_sizes_json(j["radius"], s.sizes);
+  adjust_void_json(j, s);
+  return j;
+}
+
+Json certificate_json(const frontpack::Certificate& c) {
+  Json j{{"certified", true}};
+  j.update(fields_json(c));
+  return j;
+}
+
+Json fill_stats_json(const frontpack::FillStats& stats, bool jam) {
+  Json j = fields_json(stats);
+  if (!jam) {
+    j.erase("jam");
+  }
+  return j;
+}
+
+Json certify_json(const frontpack::CertifyReport& r) {
+  Json j = fields_json(r);
+  // The summary counts the disks outside and the pairs overlapping (`frontpack check --all` lists them).
+  j["outside"] = r.outside.size();
+  j["overlapping_pairs"] = r.overlapping.size();
+  // A depth or a distance without its disks means nothing: the group goes with its optional.
+  if (!r.deepest_overlap) {
+    j.erase("deepest_overlap");
+  }
+  if (!r.farthest_outside) {
+    j.erase("farthest_outside");
+  }
   return j;
 }
 
@@ -193,21 +198,17 @@ std::string radii_line(const frontpack::SizeStats& s) {
 }
 
 Json target_json(const frontpack::TargetReport& t) {
-  Json j{{"fraction_achieved", t.fraction_achieved}, {"area_filled", t.area_filled}, {"fills", t.fills}};
-  if (t.fraction_requested > 0) {
-    j["fraction_requested"] = t.fraction_requested;
-    j["fraction_dense"] = t.fraction_dense;
-    j["scale"] = t.scale;
-    j["removed"] = t.removed;
+  Json j = fields_json(t);
+  // What was not asked for is left out.
+  if (!(t.fraction_requested > 0)) {
+    for (const char* key : {"fraction_requested", "fraction_dense", "scale", "removed"}) {
+      j.erase(key);
+    }
   }
-  if (t.count_requested > 0) {
-    j["count_requested"] = t.count_requested;
-    j["count_achieved"] = t.count_achieved;
+  if (t.count_requested == 0) {
+    j.erase("count_requested");
+    j.erase("count_achieved");
   }
-  if (t.height) {
-    j["height"] = *t.height;
-  }
-  j["outside_original"] = t.outside_original;
   return j;
 }
 

@@ -16,12 +16,14 @@
 #include <memory>
 #include <optional>
 #include <stop_token>
+#include <tuple>
 #include <vector>
 
 #include "frontpack/budget.hpp"
 #include "frontpack/certify.hpp"
 #include "frontpack/domain.hpp"
 #include "frontpack/errors.hpp"
+#include "frontpack/fields.hpp"
 #include "frontpack/geometry.hpp"
 #include "frontpack/method.hpp"
 #include "frontpack/sizes.hpp"
@@ -120,19 +122,37 @@ struct FillOptions {
 
 /// What a fill to a target fraction, count or level achieved (Packing::target).
 struct TargetReport {
-  double fraction_requested = 0;    ///< FillOptions::fraction (0: none)
-  double fraction_achieved = 0;     ///< total disk area / area filled (the clipped area with a height)
-  double fraction_dense = 0;        ///< the method's dense fraction here, measured by the first fill
-  double scale = 1;                 ///< s: the radii of the last fill were the drawn radii times s
-  std::size_t removed = 0;          ///< disks removed to reach the fraction
-  std::size_t fills = 0;            ///< fills run
-  std::size_t count_requested = 0;  ///< FillOptions::count (0: none)
-  /// With a count: the disks placed, below count_requested when the domain holds no more (the
-  /// method filled it whole) or max_disks stopped the generators (Packing::truncated).
+  double fraction_requested = 0;
+  double fraction_achieved = 0;
+  double fraction_dense = 0;
+  double scale = 1;
+  std::size_t removed = 0;
+  std::size_t fills = 0;
+  std::size_t count_requested = 0;
   std::size_t count_achieved = 0;
-  std::optional<double> height{};    ///< FillOptions::height
-  double area_filled = 0;            ///< Domain::area() of the part filled (the clipped domain)
-  std::size_t outside_original = 0;  ///< disks culled against the unclipped domain (0 expected)
+  std::optional<double> height{};
+  double area_filled = 0;
+  std::size_t outside_original = 0;
+
+  static constexpr auto fields() {
+    return std::tuple{
+        field("fraction_requested", &TargetReport::fraction_requested, "FillOptions::fraction (0: none)"),
+        field("fraction_achieved", &TargetReport::fraction_achieved,
+              "total disk area / area filled (the clipped area with a height)"),
+        field("fraction_dense", &TargetReport::fraction_dense,
+              "the method's dense fraction here, measured by the first fill"),
+        field("scale", &TargetReport::scale, "s: the radii of the last fill were the drawn radii times s"),
+        field("removed", &TargetReport::removed, "disks removed to reach the fraction"),
+        field("fills", &TargetReport::fills, "fills run"),
+        field("count_requested", &TargetReport::count_requested, "FillOptions::count (0: none)"),
+        field("count_achieved", &TargetReport::count_achieved,
+              "with a count: the disks placed, below count_requested when the domain holds no more (the method "
+              "filled it whole) or max_disks stopped the generators (Packing::truncated)"),
+        field("height", &TargetReport::height, "FillOptions::height (none: no level)"),
+        field("area_filled", &TargetReport::area_filled, "Domain::area() of the part filled (the clipped domain)"),
+        field("outside_original", &TargetReport::outside_original,
+              "disks culled against the unclipped domain (0 expected)")};
+  }
 };
 
 /// The documented bound on fill()'s peak memory per generated disk (measured 42-61 bytes on the
@@ -149,37 +169,95 @@ enum class Phase : std::uint8_t {
   jam,       ///< FillOptions::jam: rounds of insertion and relaxation (fraction: of the rounds, roughly)
 };
 
+/// "generate", "certify" or "jam".
+[[nodiscard]] constexpr const char* to_string(Phase phase) noexcept {
+  switch (phase) {
+    case Phase::generate: return "generate";
+    case Phase::certify: return "certify";
+    case Phase::jam: return "jam";
+  }
+  return "unknown";
+}
+
 /// Progress of a run, reported through Generator::on_progress.
 struct Progress {
-  std::size_t disks = 0;  ///< generated so far
-  /// Generating: the fraction of the area to fill that is filled, in [0, 1]: the area of the
-  /// disks generated so far over the area a dense packing (0.85) covers in the domain (the
-  /// boundary method) or in the polygons' boxes (the paper's forms, which fill the boxes and cull);
-  /// at most 0.99 before the front is done, then 1. Certifying: 0 as it starts, 1 at the end.
+  std::size_t disks = 0;
   double fraction = 0.0;
-  double area = 0.0;  ///< the area of the disks generated so far (culled ones included)
+  double area = 0.0;
   Phase phase = Phase::generate;
+
+  static constexpr auto fields() {
+    return std::tuple{
+        field("disks", &Progress::disks, "disks generated so far"),
+        field("fraction", &Progress::fraction,
+              "generating: the fraction of the area to fill that is filled, in [0, 1]: the area of the disks "
+              "generated so far over the area a dense packing (0.85) covers in the domain (the boundary method) or "
+              "in the polygons' boxes (the paper's forms, which fill the boxes and cull); at most 0.99 before the "
+              "front is done, then 1. Certifying: 0 as it starts, 1 at the end. Jamming: of the rounds, roughly"),
+        field("area", &Progress::area, "the area of the disks generated so far (culled ones included)"),
+        field("phase", &Progress::phase,
+              "the phase: 'generate' (the advancing front), 'certify' (the exact containment and overlap passes) "
+              "or 'jam' (FillOptions::jam: rounds of insertion and relaxation)")};
+  }
 };
 
-/// Counters of the advancing front (what the algorithm did, for diagnostics).
+/// Counters of the advancing front and the jam stage (what the algorithm did, for diagnostics),
+/// and the stages' wall times.
 struct FillStats {
-  std::size_t attempts = 0;          ///< tangent positions computed
-  std::size_t cuts = 0;              ///< cases (b)-(d)
-  std::size_t blocked_segments = 0;  ///< segments retired because a disk off the window overlapped
-  std::size_t exact_checks = 0;      ///< overlap tests close enough to need the exact predicate
-  std::size_t void_fills = 0;        ///< disks placed in voids left behind the front
-  /// Radii drawn at the end of a boundary run, when the front was done, that fitted none of the
-  /// voids left and were not placed (at most 1% of the disks; docs/boundary-method.md).
+  std::size_t attempts = 0;
+  std::size_t cuts = 0;
+  std::size_t blocked_segments = 0;
+  std::size_t exact_checks = 0;
+  std::size_t void_fills = 0;
   std::size_t skipped_radii = 0;
-  /// Points of cavities found after a boundary run's front, each given a void (docs/boundary-method.md).
   std::size_t cavities = 0;
-  std::size_t jam_rounds = 0;    ///< FillOptions::jam: rounds of insertion and relaxation
-  std::size_t jam_inserted = 0;  ///< FillOptions::jam: disks inserted by the rounds kept
-  std::size_t jam_steps = 0;     ///< FillOptions::jam: relaxation steps, every round
-  double seconds_front = 0;      ///< wall time of the advancing front (generation)
-  double seconds_jam = 0;        ///< FillOptions::jam: wall time of the jam stage
-  double seconds_cull = 0;       ///< wall time of the exact containment pass
-  double seconds_overlap = 0;    ///< wall time of the global overlap pass
+  std::size_t jam_rounds = 0;
+  std::size_t jam_inserted = 0;
+  std::size_t jam_steps = 0;
+  double seconds_front = 0;
+  double seconds_jam = 0;
+  double seconds_cull = 0;
+  double seconds_overlap = 0;
+
+  static constexpr auto fields() {
+    return std::tuple{
+        field("attempts", &FillStats::attempts, "tangent positions computed").in("generation"),
+        field("cuts", &FillStats::cuts, "cases (b)-(d)").in("generation"),
+        field("blocked_segments", &FillStats::blocked_segments,
+              "segments retired because a disk off the window overlapped")
+            .in("generation"),
+        field("exact_checks", &FillStats::exact_checks, "overlap tests close enough to need the exact predicate")
+            .in("generation"),
+        field("void_fills", &FillStats::void_fills, "disks placed in voids left behind the front").in("generation"),
+        field("skipped_radii", &FillStats::skipped_radii,
+              "radii drawn at the end of a boundary run, when the front was done, that fitted none of the voids "
+              "left and were not placed (at most 1% of the disks; docs/boundary-method.md)")
+            .in("generation"),
+        field("cavities", &FillStats::cavities,
+              "points of cavities found after a boundary run's front, each given a void (docs/boundary-method.md)")
+            .in("generation"),
+        field("jam_rounds", &FillStats::jam_rounds, "FillOptions::jam: rounds of insertion and relaxation")
+            .json("rounds")
+            .in("jam"),
+        field("jam_inserted", &FillStats::jam_inserted, "FillOptions::jam: disks inserted by the rounds kept")
+            .json("inserted")
+            .in("jam"),
+        field("jam_steps", &FillStats::jam_steps, "FillOptions::jam: relaxation steps, every round")
+            .json("steps")
+            .in("jam"),
+        field("seconds_front", &FillStats::seconds_front, "wall time of the advancing front (generation)")
+            .json("front")
+            .in("seconds"),
+        field("seconds_jam", &FillStats::seconds_jam, "FillOptions::jam: wall time of the jam stage")
+            .json("jam")
+            .in("seconds"),
+        field("seconds_cull", &FillStats::seconds_cull, "wall time of the exact containment pass")
+            .json("cull")
+            .in("seconds"),
+        field("seconds_overlap", &FillStats::seconds_overlap, "wall time of the global overlap pass")
+            .json("overlap_pass")
+            .in("seconds")};
+  }
 };
 
 struct Packing {

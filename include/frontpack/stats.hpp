@@ -96,10 +96,12 @@
 #include <span>
 #include <stop_token>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "frontpack/budget.hpp"
 #include "frontpack/domain.hpp"
+#include "frontpack/fields.hpp"
 #include "frontpack/geometry.hpp"
 #include "frontpack/sizes.hpp"
 
@@ -152,6 +154,23 @@ struct SizeClassRow {
   double requested_area_passing = 0;
   double achieved_number_passing = 0;
   double achieved_area_passing = 0;
+
+  static constexpr auto fields() {
+    return std::tuple{
+        field("radius", &SizeClassRow::radius, "the class's largest radius"),
+        field("requested_number", &SizeClassRow::requested_number, "the request's fraction in the class, by number"),
+        field("requested_area", &SizeClassRow::requested_area, "the request's fraction in the class, by area"),
+        field("achieved_number", &SizeClassRow::achieved_number, "the disks' fraction in the class, by number"),
+        field("achieved_area", &SizeClassRow::achieved_area, "the disks' fraction in the class, by area"),
+        field("requested_number_passing", &SizeClassRow::requested_number_passing,
+              "the request's fraction at or below the radius, by number"),
+        field("requested_area_passing", &SizeClassRow::requested_area_passing,
+              "the request's fraction at or below the radius, by area"),
+        field("achieved_number_passing", &SizeClassRow::achieved_number_passing,
+              "the disks' fraction at or below the radius, by number"),
+        field("achieved_area_passing", &SizeClassRow::achieved_area_passing,
+              "the disks' fraction at or below the radius, by area")};
+  }
 };
 
 /// How the bins of a radius histogram are spaced: equal ratios (SizeStats::histogram) or equal
@@ -192,35 +211,80 @@ struct HistogramBin {
   double achieved_area = 0;
   double requested_number = 0;
   double requested_area = 0;
+
+  static constexpr auto fields() {
+    return std::tuple{field("lo", &HistogramBin::lo, "the bin's smallest radius"),
+                      field("hi", &HistogramBin::hi, "the bin's upper end"),
+                      field("count", &HistogramBin::count, "the disks in the bin"),
+                      field("achieved_number", &HistogramBin::achieved_number, "their share of the number"),
+                      field("achieved_area", &HistogramBin::achieved_area, "their share of the area"),
+                      field("requested_number", &HistogramBin::requested_number,
+                            "the request's share of the number in the bin (0: no request)"),
+                      field("requested_area", &HistogramBin::requested_area,
+                            "the request's share of the area in the bin (0: no request)")};
+  }
 };
 
+/// The radii achieved, against the request when one is given.
 struct SizeStats {
   std::size_t count = 0;
   double rmin = 0;
   double rmax = 0;
-  double mean = 0;           ///< mean radius (by number)
-  double sd = 0;             ///< standard deviation of the radius (by number)
-  double median_number = 0;  ///< radius with half of the disks at or below it
-  double median_area = 0;    ///< radius with half of the disk area at or below it
-  bool compared = false;     ///< a requested distribution was given
-  std::string requested;     ///< its description (RadiusDistribution::describe())
-  double ks_number = 0;      ///< sup over r of |achieved - requested| cumulative fraction by number
-  double ks_area = 0;        ///< the same by area
-  double ks_number_at = 0;   ///< a radius where the sup is reached
+  double mean = 0;
+  double sd = 0;
+  double median_number = 0;
+  double median_area = 0;
+  bool compared = false;
+  std::string requested;
+  double ks_number = 0;
+  double ks_area = 0;
+  double ks_number_at = 0;
   double ks_area_at = 0;
-  std::vector<SizeClassRow> classes;  ///< discrete and grading-curve requests only
+  std::vector<SizeClassRow> classes;
   std::vector<HistogramBin> histogram;
+
+  static constexpr auto fields() {
+    return std::tuple{
+        field("count", &SizeStats::count, "the disks"),
+        field("rmin", &SizeStats::rmin, "the smallest radius").json("min"),
+        field("rmax", &SizeStats::rmax, "the largest radius").json("max"),
+        field("mean", &SizeStats::mean, "mean radius (by number)"),
+        field("sd", &SizeStats::sd, "standard deviation of the radius (by number)"),
+        field("median_number", &SizeStats::median_number, "radius with half of the disks at or below it")
+            .json("median_by_number"),
+        field("median_area", &SizeStats::median_area, "radius with half of the disk area at or below it")
+            .json("median_by_area"),
+        field("compared", &SizeStats::compared, "a requested distribution was given"),
+        field("requested", &SizeStats::requested, "its description (RadiusDistribution::describe())"),
+        field("ks_number", &SizeStats::ks_number, "sup over r of |achieved - requested| cumulative fraction by number")
+            .json("ks_by_number"),
+        field("ks_area", &SizeStats::ks_area, "the same by area").json("ks_by_area"),
+        field("ks_number_at", &SizeStats::ks_number_at, "a radius where the sup by number is reached")
+            .json("ks_by_number_at"),
+        field("ks_area_at", &SizeStats::ks_area_at, "a radius where the sup by area is reached").json("ks_by_area_at"),
+        field("classes", &SizeStats::classes, "the per-class table: discrete and grading-curve requests only"),
+        field("histogram", &SizeStats::histogram, "the log-spaced histogram of the radii")};
+  }
 };
 
 /// The largest disk that fits in the domain without overlapping any disk: the maximum over the
 /// points p of the domain of f(p) = min(distance from p to the boundary, min_i |p - c_i| - r_i).
 /// radius = f(centre) <= true maximum <= radius_upper (branch and bound, see the header comment).
 struct EmptyCircle {
-  bool computed = false;    ///< false: switched off, or no domain area
-  double radius = 0;        ///< f at `centre`, a lower bound of the maximum
-  double radius_upper = 0;  ///< an upper bound of the maximum
-  Point centre;             ///< inside the domain (exact point location)
-  double tolerance = 0;     ///< the gap aimed at: radius_upper - radius <= tolerance
+  bool computed = false;
+  double radius = 0;
+  double radius_upper = 0;
+  Point centre;
+  double tolerance = 0;
+
+  static constexpr auto fields() {
+    return std::tuple{
+        field("computed", &EmptyCircle::computed, "false: switched off, or no domain area"),
+        field("radius", &EmptyCircle::radius, "f at `centre`, a lower bound of the maximum"),
+        field("radius_upper", &EmptyCircle::radius_upper, "an upper bound of the maximum"),
+        field("centre", &EmptyCircle::centre, "inside the domain (exact point location)"),
+        field("tolerance", &EmptyCircle::tolerance, "the gap aimed at: radius_upper - radius <= tolerance")};
+  }
 };
 
 /// The number of connected components of {p in the domain : f(p) >= radius}: the holes where a
@@ -228,6 +292,11 @@ struct EmptyCircle {
 struct HoleCount {
   double radius = 0;
   std::size_t count = 0;
+
+  static constexpr auto fields() {
+    return std::tuple{field("radius", &HoleCount::radius, "the radius of the disk that fits"),
+                      field("count", &HoleCount::count, "the holes where it fits")};
+  }
 };
 
 /// The covered fraction of the domain's points whose distance to the boundary is in [from, to)
@@ -235,9 +304,17 @@ struct HoleCount {
 struct CoverageBin {
   double from = 0;
   double to = 0;
-  double fraction = 0;  ///< 0 if no sample fell in the bin
-  double error = 0;     ///< binomial standard error
+  double fraction = 0;
+  double error = 0;
   std::size_t samples = 0;
+
+  static constexpr auto fields() {
+    return std::tuple{field("from", &CoverageBin::from, "the bin's smallest distance to the boundary"),
+                      field("to", &CoverageBin::to, "its upper end (infinity for the last bin)"),
+                      field("fraction", &CoverageBin::fraction, "covered fraction; 0 if no sample fell in the bin"),
+                      field("error", &CoverageBin::error, "binomial standard error"),
+                      field("samples", &CoverageBin::samples, "the sample points in the bin")};
+  }
 };
 
 /// The covered fractions of the square cells of side cell_side (8 rmax by default) that lie wholly
@@ -246,64 +323,135 @@ struct CoverageBin {
 /// The cells over the domain's box are held to StatsOptions::budget (LimitError past it).
 struct CellCoverage {
   double cell_side = 0;
-  std::size_t cells = 0;  ///< 0: not computed, or no cell wholly in the interior
+  std::size_t cells = 0;
   double p1 = 0;
   double p5 = 0;
   double p50 = 0;
   double sd = 0;
-  /// The map: the cells tile the domain's box from its lower-left corner `origin`, nx across and
-  /// ny up; the covered fraction of the cell whose lower-left corner is origin + (i, j) cell_side
-  /// is map[j * nx + i], NaN where that cell is not wholly in the interior (exactly `cells` of
-  /// them are not NaN). In a periodic cell the last column or row wraps around the period.
-  /// Empty when not computed.
   Point origin{};
   std::size_t nx = 0;
   std::size_t ny = 0;
   std::vector<double> map;
+
+  static constexpr auto fields() {
+    return std::tuple{
+        field("cell_side", &CellCoverage::cell_side, "the side of the cells"),
+        field("cells", &CellCoverage::cells, "0: not computed, or no cell wholly in the interior"),
+        field("p1", &CellCoverage::p1, "the 1st percentile of the cells' covered fractions"),
+        field("p5", &CellCoverage::p5, "the 5th percentile"),
+        field("p50", &CellCoverage::p50, "the median"),
+        field("sd", &CellCoverage::sd, "their standard deviation"),
+        field("origin", &CellCoverage::origin, "the lower-left corner of the map's first cell"),
+        field("nx", &CellCoverage::nx, "the map's cells across"),
+        field("ny", &CellCoverage::ny, "the map's cells up"),
+        field("map", &CellCoverage::map,
+              "the covered fraction of the cell whose lower-left corner is origin + (i, j) cell_side is map[j * nx + "
+              "i], NaN where that cell is not wholly in the interior (exactly `cells` of them are not NaN); in a "
+              "periodic cell the last column or row wraps around the period; empty when not computed")};
+  }
 };
 
 struct PackingStats {
   std::size_t disks = 0;
-  double domain_area = 0;  ///< Domain::area()
-  double disk_area = 0;    ///< sum of pi r^2
+  double domain_area = 0;
+  double disk_area = 0;
   double packing_fraction = 0;
-  double void_ratio = 0;  ///< (1 - phi) / phi (infinity for no disks)
+  double void_ratio = 0;
 
-  bool walls = true;             ///< false: a cell periodic in x and y, no boundary hence no band
-  double band_width = 0;         ///< the width used
-  double interior_fraction = 0;  ///< sampled; 0 if the interior got no sample
-  double band_fraction = 0;      ///< sampled; 0 if the band got no sample
-  double interior_error = 0;     ///< binomial standard error (an upper bound, see above)
+  bool walls = true;
+  double band_width = 0;
+  double interior_fraction = 0;
+  double band_fraction = 0;
+  double interior_error = 0;
   double band_error = 0;
-  double interior_area = 0;  ///< sampled estimate of the interior's area
+  double interior_area = 0;
   double band_area = 0;
   std::size_t interior_samples = 0;
   std::size_t band_samples = 0;
 
-  double contact_gap = 0;                           ///< the tolerance used
-  std::size_t contacts = 0;                         ///< disk-disk pairs in contact
-  std::size_t overlaps = 0;                         ///< pairs whose gap is below -contact_gap
-  double max_overlap = 0;                           ///< largest -gap among them (0 if none)
-  std::size_t wall_contacts = 0;                    ///< disk-boundary contacts
-  double mean_coordination = 0;                     ///< 2 contacts / disks
-  std::vector<std::size_t> coordination_histogram;  ///< [k]: disks with k disk-disk contacts
-  std::size_t rattlers = 0;                         ///< disks with < 3 contacts (walls included)
-  double mean_coordination_without_rattlers = 0;    ///< disk-disk contacts of non-rattlers, per non-rattler
-  std::size_t interior_disks = 0;                   ///< disks wholly in the interior
-  double interior_coordination = 0;                 ///< their mean number of disk-disk contacts
+  double contact_gap = 0;
+  std::size_t contacts = 0;
+  std::size_t overlaps = 0;
+  double max_overlap = 0;
+  std::size_t wall_contacts = 0;
+  double mean_coordination = 0;
+  std::vector<std::size_t> coordination_histogram;
+  std::size_t rattlers = 0;
+  double mean_coordination_without_rattlers = 0;
+  std::size_t interior_disks = 0;
+  double interior_coordination = 0;
 
-  std::size_t band_disks = 0;      ///< disks closer than band_width / 2 to the boundary
-  double band_median_area = 0;     ///< median radius by area of the band disks (0: none)
-  double inside_median_area = 0;   ///< the same for the other disks
-  double segregation_ks_area = 0;  ///< two-sample KS distance by area, band disks against the others
+  std::size_t band_disks = 0;
+  double band_median_area = 0;
+  double inside_median_area = 0;
+  double segregation_ks_area = 0;
 
   EmptyCircle largest_empty_circle;
-  std::vector<HoleCount> holes;               ///< one per radius asked, in the order asked
-  double coverage_unit = 0;                   ///< the unit of the profile's bins: rmax
-  std::vector<CoverageBin> coverage_profile;  ///< [k, k + 1) coverage_unit for k = 0..5, then [6, inf)
+  std::vector<HoleCount> holes;
+  double coverage_unit = 0;
+  std::vector<CoverageBin> coverage_profile;
   CellCoverage cell_coverage;
 
   SizeStats sizes;
+
+  // The field list in three parts (each under the 80-line rule), defined before fields() so that
+  // their return types are known there.
+  static constexpr auto overall_fields() {
+    using S = PackingStats;
+    return std::tuple{
+        field("disks", &S::disks, "the disks measured"),
+        field("domain_area", &S::domain_area, "Domain::area()"),
+        field("disk_area", &S::disk_area, "sum of pi r^2"),
+        field("packing_fraction", &S::packing_fraction, "disk_area / domain_area"),
+        field("void_ratio", &S::void_ratio, "(1 - phi) / phi (infinity for no disks)"),
+        field("walls", &S::walls, "false: a cell periodic in x and y, no boundary hence no band"),
+        field("band_width", &S::band_width, "the width of the band used"),
+        field("interior_fraction", &S::interior_fraction, "sampled; 0 if the interior got no sample"),
+        field("band_fraction", &S::band_fraction, "sampled; 0 if the band got no sample"),
+        field("interior_error", &S::interior_error, "binomial standard error (an upper bound, see above)")
+            .json("interior_fraction_error"),
+        field("band_error", &S::band_error, "binomial standard error of band_fraction").json("band_fraction_error"),
+        field("interior_area", &S::interior_area, "sampled estimate of the interior's area"),
+        field("band_area", &S::band_area, "sampled estimate of the band's area"),
+        field("interior_samples", &S::interior_samples, "sample points in the interior"),
+        field("band_samples", &S::band_samples, "sample points in the band")};
+  }
+  static constexpr auto contact_fields() {
+    using S = PackingStats;
+    return std::tuple{
+        field("contact_gap", &S::contact_gap, "the contact tolerance used"),
+        field("contacts", &S::contacts, "disk-disk pairs in contact"),
+        field("overlaps", &S::overlaps, "pairs whose gap is below -contact_gap"),
+        field("max_overlap", &S::max_overlap, "largest -gap among them (0 if none)"),
+        field("wall_contacts", &S::wall_contacts, "disk-boundary contacts"),
+        field("mean_coordination", &S::mean_coordination, "2 contacts / disks"),
+        field("coordination_histogram", &S::coordination_histogram, "[k]: disks with k disk-disk contacts"),
+        field("rattlers", &S::rattlers, "disks with < 3 contacts (walls included)"),
+        field("mean_coordination_without_rattlers", &S::mean_coordination_without_rattlers,
+              "disk-disk contacts of non-rattlers, per non-rattler"),
+        field("interior_disks", &S::interior_disks, "disks wholly in the interior"),
+        field("interior_coordination", &S::interior_coordination, "their mean number of disk-disk contacts"),
+        field("band_disks", &S::band_disks, "disks closer than band_width / 2 to the boundary"),
+        field("band_median_area", &S::band_median_area, "median radius by area of the band disks (0: none)")
+            .json("band_median_by_area"),
+        field("inside_median_area", &S::inside_median_area, "the same for the other disks")
+            .json("inside_median_by_area"),
+        field("segregation_ks_area", &S::segregation_ks_area,
+              "two-sample KS distance by area, band disks against the others")
+            .json("segregation_ks_by_area")};
+  }
+  static constexpr auto void_fields() {
+    using S = PackingStats;
+    return std::tuple{
+        field("largest_empty_circle", &S::largest_empty_circle, "the largest disk that fits (EmptyCircle)"),
+        field("holes", &S::holes, "one per radius asked, in the order asked"),
+        field("coverage_unit", &S::coverage_unit, "the unit of the profile's bins: rmax"),
+        field("coverage_profile", &S::coverage_profile,
+              "[k, k + 1) coverage_unit for k = 0..5, then [6, inf): the coverage by distance from the boundary"),
+        field("cell_coverage", &S::cell_coverage, "the coverage of interior cells (CellCoverage)"),
+        field("sizes", &S::sizes, "the radii achieved, against the request (SizeStats)").json("radius")};
+  }
+  static constexpr auto fields() { return std::tuple_cat(overall_fields(), contact_fields(), void_fields()); }
 };
 
 /// Measures a packing. Disks must have finite centres and finite radii > 0 (else

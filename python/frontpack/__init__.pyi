@@ -2,7 +2,7 @@
 # The contracts are in the docstrings (help(frontpack.fill)) and in include/frontpack/*.hpp.
 import enum
 import os
-from typing import Any, Callable, Iterable, Literal, Mapping, Optional, Sequence, Tuple, Union
+from typing import Any, Callable, Iterable, Literal, Mapping, Optional, Sequence, Tuple, TypedDict, Union
 
 import numpy as np
 import numpy.typing as npt
@@ -175,9 +175,28 @@ class FillStats:
     void_fills: int
     skipped_radii: int
     cavities: int
+    jam_rounds: int
+    jam_inserted: int
+    jam_steps: int
     seconds_front: float
+    seconds_jam: float
     seconds_cull: float
     seconds_overlap: float
+
+# The dicts of the result structs (include/frontpack/{fill,stats}.hpp): one key per field, in the
+# order of the field lists (python/tests/test_result_fields.py checks them against the module).
+class TargetReport(TypedDict):
+    fraction_requested: float
+    fraction_achieved: float
+    fraction_dense: float
+    scale: float
+    removed: int
+    fills: int
+    count_requested: int
+    count_achieved: int
+    height: Optional[float]
+    area_filled: float
+    outside_original: int
 
 class Packing:
     disks: Disks
@@ -185,7 +204,7 @@ class Packing:
     stats: FillStats
     truncated: bool
     cancelled: bool
-    target: Optional[dict[str, Any]]
+    target: Optional[TargetReport]
     def __len__(self) -> int: ...
 
 def fill(
@@ -221,6 +240,104 @@ class CertifyReport:
     def __bool__(self) -> bool: ...
 
 def certify(domain: Shape, disks: ArrayLike) -> CertifyReport: ...
+
+class SizeClassRow(TypedDict):
+    radius: float
+    requested_number: float
+    requested_area: float
+    achieved_number: float
+    achieved_area: float
+    requested_number_passing: float
+    requested_area_passing: float
+    achieved_number_passing: float
+    achieved_area_passing: float
+
+class HistogramBin(TypedDict):
+    lo: float
+    hi: float
+    count: int
+    achieved_number: float
+    achieved_area: float
+    requested_number: float
+    requested_area: float
+
+class SizeStats(TypedDict):
+    count: int
+    rmin: float
+    rmax: float
+    mean: float
+    sd: float
+    median_number: float
+    median_area: float
+    compared: bool
+    requested: str
+    ks_number: float
+    ks_area: float
+    ks_number_at: float
+    ks_area_at: float
+    classes: list[SizeClassRow]
+    histogram: list[HistogramBin]
+
+class EmptyCircle(TypedDict):
+    computed: bool
+    radius: float
+    radius_upper: float
+    centre: Tuple[float, float]
+    tolerance: float
+
+# "from" is a keyword: the functional form.
+CoverageBin = TypedDict("CoverageBin", {"from": float, "to": float, "fraction": float, "error": float, "samples": int})
+
+class CellCoverage(TypedDict):
+    cell_side: float
+    cells: int
+    p1: float
+    p5: float
+    p50: float
+    sd: float
+    origin: Tuple[float, float]
+    nx: int
+    ny: int
+    map: npt.NDArray[np.float64]  # shape (ny, nx)
+
+class PackingStats(TypedDict):
+    disks: int
+    domain_area: float
+    disk_area: float
+    packing_fraction: float
+    void_ratio: float
+    walls: bool
+    band_width: float
+    interior_fraction: float
+    band_fraction: float
+    interior_error: float
+    band_error: float
+    interior_area: float
+    band_area: float
+    interior_samples: int
+    band_samples: int
+    contact_gap: float
+    contacts: int
+    overlaps: int
+    max_overlap: float
+    wall_contacts: int
+    mean_coordination: float
+    coordination_histogram: list[int]
+    rattlers: int
+    mean_coordination_without_rattlers: float
+    interior_disks: int
+    interior_coordination: float
+    band_disks: int
+    band_median_area: float
+    inside_median_area: float
+    segregation_ks_area: float
+    largest_empty_circle: EmptyCircle
+    holes: dict[float, int]  # HoleCount: {radius: count}
+    coverage_unit: float
+    coverage_profile: list[CoverageBin]
+    cell_coverage: CellCoverage
+    sizes: SizeStats
+
 def measure(
     domain: Shape,
     disks: ArrayLike,
@@ -239,7 +356,7 @@ def measure(
     cell_side: float = 0.0,
     max_disks: int = 50_000_000,
     memory_limit: int = 0,
-) -> dict[str, Any]: ...
+) -> PackingStats: ...
 
 WriteFormat = Literal["csv", "yade", "lammps", "vtp", "svg"]
 

@@ -14,19 +14,11 @@
 #include <string>
 
 #include "bind.hpp"
+#include "fields.hpp"
 
 namespace frontpack::python {
 
 namespace {
-
-const char* phase_name(Phase phase) {
-  switch (phase) {
-    case Phase::generate: return "generate";
-    case Phase::certify: return "certify";
-    case Phase::jam: return "jam";
-  }
-  return "unknown";
-}
 
 struct PyPacking {
   py::array disks;
@@ -38,22 +30,7 @@ struct PyPacking {
 };
 
 py::object target_dict(const std::optional<TargetReport>& t) {
-  if (!t) {
-    return py::none();
-  }
-  py::dict d;
-  d["fraction_requested"] = t->fraction_requested;
-  d["fraction_achieved"] = t->fraction_achieved;
-  d["fraction_dense"] = t->fraction_dense;
-  d["scale"] = t->scale;
-  d["removed"] = t->removed;
-  d["fills"] = t->fills;
-  d["count_requested"] = t->count_requested;
-  d["count_achieved"] = t->count_achieved;
-  d["height"] = t->height ? py::object(py::float_(*t->height)) : py::object(py::none());
-  d["area_filled"] = t->area_filled;
-  d["outside_original"] = t->outside_original;
-  return d;
+  return t ? py::object(fields_dict(*t)) : py::object(py::none());
 }
 
 // A std::stop_source Python can hold and request from another thread.
@@ -225,6 +202,40 @@ void bind_fill_call(py::module_& m) {
       "fill() without the shape conversion and the progress bar; the options by their names (fill_options()).");
 }
 
+// Progress, FillStats and Packing: the classes a fill hands back.
+void bind_results(py::module_& m) {
+  py::class_<Progress> progress_class(m, "Progress", "A run's progress, passed to fill's progress callback.");
+  bind_fields(progress_class);
+  progress_class.def("__repr__", [](const Progress& p) {
+    return "<frontpack.Progress " + std::string(to_string(p.phase)) + " " + std::to_string(p.disks) + " disks, " +
+           py::repr(py::float_(p.fraction)).cast<std::string>() + ">";
+  });
+
+  py::class_<FillStats> stats_class(
+      m, "FillStats",
+      "Counters of the advancing front and the jam stage (diagnostics), and the stages' wall "
+      "times.");
+  bind_fields(stats_class);
+
+  py::class_<PyPacking>(m, "Packing", "The result of fill().")
+      .def_readonly("disks", &PyPacking::disks,
+                    "(N, 3) float64 array of x, y, r: certified pairwise non-overlapping and inside the domain, "
+                    "exactly. It views the library's own memory (no copy).")
+      .def_readonly("certificate", &PyPacking::certificate)
+      .def_readonly("stats", &PyPacking::stats)
+      .def_readonly("truncated", &PyPacking::truncated, "max_disks was reached.")
+      .def_readonly("cancelled", &PyPacking::cancelled, "The progress callback returned False.")
+      .def_readonly("target", &PyPacking::target,
+                    "With fraction, count or height: what was achieved, a dict of the TargetReport fields "
+                    "(frontpack._core._result_fields['TargetReport']); else None.")
+      .def("__len__", [](const PyPacking& p) { return p.disks.shape(0); })
+      .def("__repr__", [](const PyPacking& p) {
+        return "<frontpack.Packing " + std::to_string(p.disks.shape(0)) + " disks, certified (" +
+               std::to_string(p.certificate.generated) + " generated, " + std::to_string(p.certificate.culled) +
+               " culled, " + std::to_string(p.certificate.dropped) + " dropped)>";
+      });
+}
+
 }  // namespace
 
 void bind_fill(py::module_& m) {
@@ -237,51 +248,7 @@ void bind_fill(py::module_& m) {
           "Requests the stop; True if this call made the request.")
       .def_property_readonly("stop_requested", [](const StopSource& s) { return s.source.stop_requested(); });
 
-  py::class_<Progress>(m, "Progress", "A run's progress, passed to fill's progress callback.")
-      .def_readonly("disks", &Progress::disks, "Disks generated so far.")
-      .def_readonly("fraction", &Progress::fraction,
-                    "Generating: the fraction of the area to fill that is filled, in [0, 1] (at most 0.99 before "
-                    "the front is done). Certifying: 0 as it starts, 1 at the end.")
-      .def_readonly("area", &Progress::area, "Area of the disks generated so far.")
-      .def_property_readonly(
-          "phase", [](const Progress& p) { return phase_name(p.phase); },
-          "'generate' (the advancing front) or 'certify' (the exact passes).")
-      .def("__repr__", [](const Progress& p) {
-        return "<frontpack.Progress " + std::string(phase_name(p.phase)) + " " + std::to_string(p.disks) + " disks, " +
-               py::repr(py::float_(p.fraction)).cast<std::string>() + ">";
-      });
-
-  py::class_<FillStats>(m, "FillStats", "Counters of the advancing front (diagnostics).")
-      .def_readonly("attempts", &FillStats::attempts)
-      .def_readonly("cuts", &FillStats::cuts)
-      .def_readonly("blocked_segments", &FillStats::blocked_segments)
-      .def_readonly("exact_checks", &FillStats::exact_checks)
-      .def_readonly("void_fills", &FillStats::void_fills)
-      .def_readonly("skipped_radii", &FillStats::skipped_radii)
-      .def_readonly("cavities", &FillStats::cavities)
-      .def_readonly("seconds_front", &FillStats::seconds_front)
-      .def_readonly("seconds_cull", &FillStats::seconds_cull)
-      .def_readonly("seconds_overlap", &FillStats::seconds_overlap);
-
-  py::class_<PyPacking>(m, "Packing", "The result of fill().")
-      .def_readonly("disks", &PyPacking::disks,
-                    "(N, 3) float64 array of x, y, r: certified pairwise non-overlapping and inside the domain, "
-                    "exactly. It views the library's own memory (no copy).")
-      .def_readonly("certificate", &PyPacking::certificate)
-      .def_readonly("stats", &PyPacking::stats)
-      .def_readonly("truncated", &PyPacking::truncated, "max_disks was reached.")
-      .def_readonly("cancelled", &PyPacking::cancelled, "The progress callback returned False.")
-      .def_readonly("target", &PyPacking::target,
-                    "With fraction, count or height: what was achieved (TargetReport as a dict: fraction_requested, "
-                    "fraction_achieved, fraction_dense, scale, removed, fills, count_requested, count_achieved, "
-                    "height, area_filled, "
-                    "outside_original); else None.")
-      .def("__len__", [](const PyPacking& p) { return p.disks.shape(0); })
-      .def("__repr__", [](const PyPacking& p) {
-        return "<frontpack.Packing " + std::to_string(p.disks.shape(0)) + " disks, certified (" +
-               std::to_string(p.certificate.generated) + " generated, " + std::to_string(p.certificate.culled) +
-               " culled, " + std::to_string(p.certificate.dropped) + " dropped)>";
-      });
+  bind_results(m);
 
   bind_fill_call(m);
 

@@ -3,7 +3,6 @@
 
 #include <algorithm>
 #include <charconv>
-#include <cmath>
 #include <cstdint>
 #include <iostream>
 #include <limits>
@@ -87,19 +86,9 @@ int run_check(CheckArgs& a) {
            {"domain", domain_name},
            {"disk_file", disk_file},
            {"disks", disks.size()},
-           {"certified", certified},
-           {"outside", r.outside.size()},
-           {"overlapping_pairs", r.overlapping.size()},
-           {"candidate_pairs", r.certificate.candidate_pairs}};
-    if (r.farthest_outside) {
-      j["farthest_outside"] =
-          Json{{"disk", *r.farthest_outside},
-               {"by", std::isfinite(r.farthest_outside_by) ? Json(r.farthest_outside_by) : Json(nullptr)}};
-    }
-    if (r.deepest_overlap) {
-      j["deepest_overlap"] =
-          Json{{"disks", {r.deepest_overlap->first, r.deepest_overlap->second}}, {"depth", r.deepest_overlap_depth}};
-    }
+           {"certified", certified}};
+    j.update(frontpack_tool::certify_json(r));
+    j["candidate_pairs"] = r.certificate.candidate_pairs;
     pending.write_text(a.json, j.dump(2) + "\n");
   }
   pending.commit_all(stop_token());

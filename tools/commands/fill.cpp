@@ -114,7 +114,6 @@ DeckPlan plan_deck(const FillArgs& a, std::uint32_t types) {
 Json fill_json(const FillArgs& a, const std::string& spec, const frontpack::FillOptions& options,
                const frontpack::Domain& domain, const frontpack::Packing& p, const frontpack::PackingStats& s,
                const std::vector<frontpack_tool::Output>& outputs, double seconds_stats, double seconds_total) {
-  const frontpack::Certificate& c = p.certificate;
   Json outs = Json::array();
   for (const auto& o : outputs) {
     outs.push_back(Json{{"path", o.path.string()}, {"format", frontpack_tool::format_name(o.format)}});
@@ -130,23 +129,13 @@ Json fill_json(const FillArgs& a, const std::string& spec, const frontpack::Fill
          {"disks", p.disks.size()},
          {"truncated", p.truncated}};
   j.update(frontpack_tool::stats_json(s));
-  j["certificate"] = Json{{"certified", true},
-                          {"generated", c.generated},
-                          {"culled", c.culled},
-                          {"dropped", c.dropped},
-                          {"candidate_pairs", c.candidate_pairs},
-                          {"exact", c.exact}};
-  j["generation"] = Json{{"attempts", p.stats.attempts},
-                         {"cuts", p.stats.cuts},
-                         {"void_fills", p.stats.void_fills},
-                         {"skipped_radii", p.stats.skipped_radii},
-                         {"cavities", p.stats.cavities}};
-  if (options.jam) {
-    j["jam"] = Json{{"rounds", p.stats.jam_rounds}, {"inserted", p.stats.jam_inserted}, {"steps", p.stats.jam_steps}};
+  j["certificate"] = frontpack_tool::certificate_json(p.certificate);
+  Json stats = frontpack_tool::fill_stats_json(p.stats, options.jam);
+  for (auto& group : stats.items()) {
+    j[group.key()] = std::move(group.value());
   }
-  j["seconds"] =
-      Json{{"front", p.stats.seconds_front},          {"jam", p.stats.seconds_jam},  {"cull", p.stats.seconds_cull},
-           {"overlap_pass", p.stats.seconds_overlap}, {"statistics", seconds_stats}, {"total", seconds_total}};
+  j["seconds"]["statistics"] = seconds_stats;
+  j["seconds"]["total"] = seconds_total;
   if (p.target) {
     j["target"] = frontpack_tool::target_json(*p.target);
   }
