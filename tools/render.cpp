@@ -169,37 +169,38 @@ void huge_disk_path(cairo_t* cr, const View& view, frontpack::Point c, double r,
   cairo_close_path(cr);
 }
 
-// The disks, coloured by radius on the scale `colours`.
-void draw_disks(cairo_t* cr, const View& view, Picture format, std::span<const frontpack::Disk> disks,
-                const ColourScale& colours, int width_px, int height_px) {
-  // The disks, grouped by colour (64 levels of the colour map) so that each group is filled as
-  // a few large paths rather than one fill per disk: fast for millions of disks, small SVGs.
-  const auto level_of = [&](double r) { return colours.level(r); };
-  std::vector<std::uint32_t> start(kLevels + 1, 0);
+// The disks' indices grouped by colour level: order[start[k], start[k + 1]) have level k, in
+// index order (a stable counting sort).
+struct ByLevel {
+  std::vector<std::uint32_t> start;
+  std::vector<std::uint32_t> order;
+};
+
+ByLevel sort_by_level(std::span<const frontpack::Disk> disks, const ColourScale& colours) {
+  ByLevel g;
+  g.start.assign(kLevels + 1, 0);
   for (const frontpack::Disk& d : disks) {
-    ++start[level_of(d.radius) + 1];
+    ++g.start[colours.level(d.radius) + 1];
   }
   for (std::size_t k = 0; k < kLevels; ++k) {
-    start[k + 1] += start[k];
+    g.start[k + 1] += g.start[k];
   }
-  std::vector<std::uint32_t> order(disks.size());
-  {
-    std::vector<std::uint32_t> next(start.begin(), start.end() - 1);
-    for (std::size_t i = 0; i < disks.size(); ++i) {
-      order[next[level_of(disks[i].radius)]++] = static_cast<std::uint32_t>(i);
-    }
+  g.order.resize(disks.size());
+  std::vector<std::uint32_t> next(g.start.begin(), g.start.end() - 1);
+  for (std::size_t i = 0; i < disks.size(); ++i) {
+    g.order[next[colours.level(disks[i].radius)]++] = static_cast<std::uint32_t>(i);
   }
-  const bool raster = format == Picture::png;
-  const double outline_width = std::max(0.4, width_px / 3000.0);
-  const double outline_from = 4 * outline_width;  // outline disks at least 8 outline widths across
-  // Outlines are drawn as a dark disk under a slightly smaller coloured one: two fills, which
-  // Cairo rasterises several times faster than a stroke.
-  // Only what meets the picture is drawn (a disk far outside the domain is skipped), and a disk
-  // larger than the picture is drawn as the part of it inside (frame_of(), reach()).
-  const double pad = 2 * outline_width + 2;
-  const Frame frame = frame_of(view, width_px, height_px, pad);
-  const double extent = width_px + height_px;  // at least the frame's diagonal, in pixels
-  const auto disk_path = [&](std::size_t b, std::size_t e, bool outline_pass) {
+  return g;
+}
+
+// Builds the path of a run of disks, in one of the two passes. Outlines are drawn as a dark disk
+// under a slightly smaller coloured one: two fills, which Cairo rasterises several times faster
+// than a stroke. Only what meets the picture is drawn (a disk far outside the domain is skipped),
+// and a disk larger than the picture is drawn as the part of it inside (frame_of(), reach()).
+struct DiskPaths {
+  // The path of order[b, e): the outlined disks' full size in the outline pass, else every disk
+  // (an outlined one shrunk by the outline's width); false when nothing meets the picture.
+  bool path(std::size_t b, std::size_t e, bool outline_pass) const {
     cairo_new_path(cr);
     bool any = false;
     for (std::size_t m = b; m < e; ++m) {
@@ -213,47 +214,90 @@ void draw_disks(cairo_t* cr, const View& view, Picture format, std::span<const f
         r -= outline_width;
       }
       if (!(r <= extent)) {  // (in pixels, its radius or centre may be infinite: decided in domain units)
-        const frontpack::Disk shown{d.centre,
-                                    outline_pass || !outlined ? d.radius : d.radius - view.units(outline_width)};
-        const Reach where = reach(shown, frame);
-        if (where == Reach::none) {
-          continue;
-        }
-        any = true;
-        if (where == Reach::covers) {
-          cairo_rectangle(cr, -pad, -pad, width_px + 2 * pad, height_px + 2 * pad);
-        } else {
-          huge_disk_path(cr, view, d.centre, shown.radius, frame, extent);
-        }
+        any = huge(d, outline_pass || !outlined) || any;
         continue;
       }
-      const double x = view.x(d.centre.x);
-      const double y = view.y(d.centre.y);
-      if (!(x + r >= -pad && x - r <= width_px + pad && y + r >= -pad && y - r <= height_px + pad)) {
-        continue;  // its box misses the picture (also a centre beyond the doubles in pixels)
-      }
-      any = true;
-      if (raster && r < 1) {
-        // Below a pixel a square of the same area looks the same and is much cheaper.
-        const double h = 0.5 * std::sqrt(std::numbers::pi) * r;
-        cairo_rectangle(cr, x - h, y - h, 2 * h, 2 * h);
-      } else {
-        cairo_new_sub_path(cr);
-        cairo_arc(cr, x, y, r, 0, 2 * std::numbers::pi);
-      }
+      any = small(d, r) || any;
     }
     return any;
-  };
+  }
+
+  // A disk larger than the picture: what of it meets the frame, of its full radius or shrunk by
+  // the outline's width.
+  bool huge(const frontpack::Disk& d, bool full) const {
+    const frontpack::Disk shown{d.centre, full ? d.radius : d.radius - view.units(outline_width)};
+    const Reach where = reach(shown, frame);
+    if (where == Reach::none) {
+      return false;
+    }
+    if (where == Reach::covers) {
+      cairo_rectangle(cr, -pad, -pad, width_px + 2 * pad, height_px + 2 * pad);
+    } else {
+      huge_disk_path(cr, view, d.centre, shown.radius, frame, extent);
+    }
+    return true;
+  }
+
+  // A disk of radius r pixels, unless its box misses the picture.
+  bool small(const frontpack::Disk& d, double r) const {
+    const double x = view.x(d.centre.x);
+    const double y = view.y(d.centre.y);
+    if (!(x + r >= -pad && x - r <= width_px + pad && y + r >= -pad && y - r <= height_px + pad)) {
+      return false;  // its box misses the picture (also a centre beyond the doubles in pixels)
+    }
+    if (raster && r < 1) {
+      // Below a pixel a square of the same area looks the same and is much cheaper.
+      const double h = 0.5 * std::sqrt(std::numbers::pi) * r;
+      cairo_rectangle(cr, x - h, y - h, 2 * h, 2 * h);
+    } else {
+      cairo_new_sub_path(cr);
+      cairo_arc(cr, x, y, r, 0, 2 * std::numbers::pi);
+    }
+    return true;
+  }
+
+  cairo_t* cr;
+  const View& view;
+  std::span<const frontpack::Disk> disks;
+  std::span<const std::uint32_t> order;
+  int width_px, height_px;
+  bool raster;
+  double outline_width, outline_from;  // outline disks at least 8 outline widths across
+  double pad;
+  Frame frame;
+  double extent;  // at least the frame's diagonal, in pixels
+};
+
+// The disks, coloured by radius on the scale `colours`.
+void draw_disks(cairo_t* cr, const View& view, Picture format, std::span<const frontpack::Disk> disks,
+                const ColourScale& colours, int width_px, int height_px) {
+  // The disks, grouped by colour (64 levels of the colour map) so that each group is filled as
+  // a few large paths rather than one fill per disk: fast for millions of disks, small SVGs.
+  const ByLevel groups = sort_by_level(disks, colours);
+  const double outline_width = std::max(0.4, width_px / 3000.0);
+  const double pad = 2 * outline_width + 2;
+  const DiskPaths paths{cr,
+                        view,
+                        disks,
+                        groups.order,
+                        width_px,
+                        height_px,
+                        format == Picture::png,
+                        outline_width,
+                        4 * outline_width,
+                        pad,
+                        frame_of(view, width_px, height_px, pad),
+                        static_cast<double>(width_px + height_px)};
   constexpr std::size_t kChunk = 4096;
   for (std::size_t k = 0; k < kLevels; ++k) {
     const Rgb fill = ColourScale::colour(k);
-    for (std::size_t b = start[k]; b < start[k + 1]; b += kChunk) {
-      const std::size_t e = std::min<std::size_t>(start[k + 1], b + kChunk);
-      if (disk_path(b, e, true)) {
+    for (std::size_t b = groups.start[k]; b < groups.start[k + 1]; b += kChunk) {
+      const std::size_t e = std::min<std::size_t>(groups.start[k + 1], b + kChunk);
+      if (paths.path(b, e, true)) {
         cairo_set_source_rgb(cr, 0.25, 0.25, 0.25);
         cairo_fill(cr);
       }
-      if (disk_path(b, e, false)) {
+      if (paths.path(b, e, false)) {
         cairo_set_source_rgb(cr, fill.r, fill.g, fill.b);
         cairo_fill(cr);
       }

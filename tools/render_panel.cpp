@@ -135,11 +135,12 @@ Panel make_panel(std::span<const frontpack::Disk> disks, const RenderOptions& op
   return panel;
 }
 
-// Draws the panel in the band [top, top + histogram_height(width_px)) of the picture.
-void draw_panel(cairo_t* cr, const Panel& panel, const ColourScale& colours, double top, int width_px) {
+namespace {
+
+// The panel's captions, each shrunk to fit the width if need be; leaves the font size at f.
+void draw_captions(cairo_t* cr, const Panel& panel, double bottom, int width_px) {
   const double w = width_px;
   const double f = font_px(width_px);
-  const double bottom = top + histogram_height(width_px);
   const double margin = kMarginFraction * w;
   cairo_select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
   const auto caption_line = [&](int k, double baseline) {
@@ -161,93 +162,125 @@ void draw_panel(cairo_t* cr, const Panel& panel, const ColourScale& colours, dou
   };
   caption_line(0, bottom - 1.8 * f);
   caption_line(1, bottom - 0.5 * f);
-  const std::size_t bins = panel.achieved.size();
-  if (bins == 0) {
-    return;
-  }
+}
 
-  // y axis: nice ticks from 0 to at least the tallest bar or step.
+// The plot's frame in the picture: the y axis's nice ticks from 0 to at least the tallest bar or
+// step, the plot's corners (room left for the tick labels), and the maps from radius and share
+// to pixels.
+struct PlotFrame {
+  cairo_t* cr = nullptr;
+  const Panel* panel = nullptr;
+  double w = 0;       // picture width
+  double f = 0;       // font size
+  double margin = 0;  // picture margin
+  double ystep = 0;
+  double ytop = 0;
+  int yticks = 0;
+  double left = 0;
+  double right = 0;
+  double plot_top = 0;
+  double axis_y = 0;
+  double lo = 0;  // the radius axis's range
+  double hi = 0;
+  std::string hi_label;
+
+  [[nodiscard]] double px(double r) const { return left + (r - lo) / (hi - lo) * (right - left); }
+  [[nodiscard]] double py(double v) const { return axis_y - v / ytop * (axis_y - plot_top); }
+};
+
+// The frame of a panel with bins; false when the picture is too narrow for a plot.
+bool plan_frame(PlotFrame& p, double top, double bottom) {
+  cairo_t* cr = p.cr;
+  const Panel& panel = *p.panel;
+  const double f = p.f;
   double ymax = 0;
-  for (std::size_t b = 0; b < bins; ++b) {
+  for (std::size_t b = 0; b < panel.achieved.size(); ++b) {
     ymax = std::max({ymax, panel.achieved[b], panel.requested.empty() ? 0.0 : panel.requested[b]});
   }
-  const double ystep = nice_step(ymax > 0 ? ymax / 4 : 0.25);
-  const double ytop = std::max(1.0, std::ceil(ymax / ystep - 1e-9)) * ystep;
-  const int yticks = static_cast<int>(std::lround(ytop / ystep));
+  p.ystep = nice_step(ymax > 0 ? ymax / 4 : 0.25);
+  p.ytop = std::max(1.0, std::ceil(ymax / p.ystep - 1e-9)) * p.ystep;
+  p.yticks = static_cast<int>(std::lround(p.ytop / p.ystep));
   double ylabel_width = 0;
-  for (int k = 0; k <= yticks; ++k) {
-    ylabel_width = std::max(ylabel_width, text_width(cr, format_g(k * ystep)));
+  for (int k = 0; k <= p.yticks; ++k) {
+    ylabel_width = std::max(ylabel_width, text_width(cr, format_g(k * p.ystep)));
   }
-  const std::string lo_label = format_g(panel.edges.front());
-  const std::string hi_label = format_g(panel.edges.back());
-  const double left = margin + 1.5 * f + ylabel_width + 0.5 * f;
-  const double right = w - margin - std::max(0.5 * text_width(cr, hi_label), 0.2 * f);
-  const double plot_top = top + 0.6 * f;
-  const double axis_y = bottom - 5.8 * f;
-  if (!(right - left >= 4 && axis_y - plot_top >= 4)) {
-    return;  // too narrow a picture for a plot: the caption only
+  p.hi_label = format_g(panel.edges.back());
+  p.left = p.margin + 1.5 * f + ylabel_width + 0.5 * f;
+  p.right = p.w - p.margin - std::max(0.5 * text_width(cr, p.hi_label), 0.2 * f);
+  p.plot_top = top + 0.6 * f;
+  p.axis_y = bottom - 5.8 * f;
+  if (!(p.right - p.left >= 4 && p.axis_y - p.plot_top >= 4)) {
+    return false;
   }
-  const double lo = panel.edges.front();
-  const double hi = panel.edges.back();
-  const auto px = [&](double r) { return left + (r - lo) / (hi - lo) * (right - left); };
-  const auto py = [&](double v) { return axis_y - v / ytop * (axis_y - plot_top); };
+  p.lo = panel.edges.front();
+  p.hi = panel.edges.back();
+  return true;
+}
 
-  // Grid lines and y tick labels.
+// Grid lines, y tick labels and the y axis's title.
+void draw_y_axis(const PlotFrame& p) {
+  cairo_t* cr = p.cr;
   cairo_set_line_width(cr, 1);
-  for (int k = 0; k <= yticks; ++k) {
-    const double v = k * ystep;
+  for (int k = 0; k <= p.yticks; ++k) {
+    const double v = k * p.ystep;
     const std::string label = format_g(v);
     cairo_set_source_rgb(cr, 0.88, 0.88, 0.88);
-    cairo_move_to(cr, left, std::round(py(v)) + 0.5);
-    cairo_line_to(cr, right, std::round(py(v)) + 0.5);
+    cairo_move_to(cr, p.left, std::round(p.py(v)) + 0.5);
+    cairo_line_to(cr, p.right, std::round(p.py(v)) + 0.5);
     cairo_stroke(cr);
     cairo_set_source_rgb(cr, 0.1, 0.1, 0.1);
-    show_text(cr, left - 0.4 * f - text_width(cr, label), py(v) + 0.35 * f, label);
+    show_text(cr, p.left - 0.4 * p.f - text_width(cr, label), p.py(v) + 0.35 * p.f, label);
   }
   cairo_save(cr);
-  cairo_move_to(cr, margin + 1.1 * f, 0.5 * (plot_top + axis_y) + 0.5 * text_width(cr, "area fraction"));
+  cairo_move_to(cr, p.margin + 1.1 * p.f, 0.5 * (p.plot_top + p.axis_y) + 0.5 * text_width(cr, "area fraction"));
   cairo_rotate(cr, -std::numbers::pi / 2);
   cairo_show_text(cr, "area fraction");
   cairo_restore(cr);
+}
 
-  // Bars, coloured as the disks of the bin's middle radius are; a hairline gap when they are wide.
-  for (std::size_t b = 0; b < bins; ++b) {
+// Bars, coloured as the disks of the bin's middle radius are; a hairline gap when they are wide.
+void draw_bars(const PlotFrame& p, const ColourScale& colours) {
+  cairo_t* cr = p.cr;
+  const Panel& panel = *p.panel;
+  for (std::size_t b = 0; b < panel.achieved.size(); ++b) {
     if (!(panel.achieved[b] > 0)) {
       continue;
     }
-    double x0 = px(panel.edges[b]);
-    double x1 = px(panel.edges[b + 1]);
+    double x0 = p.px(panel.edges[b]);
+    double x1 = p.px(panel.edges[b + 1]);
     if (x1 - x0 >= 4) {
       x0 += 0.5;
       x1 -= 0.5;
     }
     const Rgb c = ColourScale::colour(colours.level(0.5 * (panel.edges[b] + panel.edges[b + 1])));
     cairo_set_source_rgb(cr, c.r, c.g, c.b);
-    cairo_rectangle(cr, x0, py(panel.achieved[b]), x1 - x0, axis_y - py(panel.achieved[b]));
+    cairo_rectangle(cr, x0, p.py(panel.achieved[b]), x1 - x0, p.axis_y - p.py(panel.achieved[b]));
     cairo_fill(cr);
   }
-  // The request, as a step line over the same bins.
-  if (!panel.requested.empty()) {
-    cairo_new_path(cr);
-    cairo_move_to(cr, px(lo), py(0));
-    for (std::size_t b = 0; b < bins; ++b) {
-      cairo_line_to(cr, px(panel.edges[b]), py(panel.requested[b]));
-      cairo_line_to(cr, px(panel.edges[b + 1]), py(panel.requested[b]));
-    }
-    cairo_line_to(cr, px(hi), py(0));
-    cairo_set_source_rgb(cr, 0.8, 0.15, 0.1);
-    cairo_set_line_width(cr, std::max(1.5, w / 600));
-    cairo_set_line_join(cr, CAIRO_LINE_JOIN_MITER);
-    cairo_stroke(cr);
-  }
+}
 
-  // Axes, x ticks (the range's ends and nice values between, without overlapping labels).
-  cairo_set_source_rgb(cr, 0.15, 0.15, 0.15);
-  cairo_set_line_width(cr, 1);
-  cairo_move_to(cr, left, plot_top);
-  cairo_line_to(cr, left, axis_y);
-  cairo_line_to(cr, right, axis_y);
+// The request, as a step line over the same bins.
+void draw_request(const PlotFrame& p) {
+  cairo_t* cr = p.cr;
+  const Panel& panel = *p.panel;
+  if (panel.requested.empty()) {
+    return;
+  }
+  cairo_new_path(cr);
+  cairo_move_to(cr, p.px(p.lo), p.py(0));
+  for (std::size_t b = 0; b < panel.achieved.size(); ++b) {
+    cairo_line_to(cr, p.px(panel.edges[b]), p.py(panel.requested[b]));
+    cairo_line_to(cr, p.px(panel.edges[b + 1]), p.py(panel.requested[b]));
+  }
+  cairo_line_to(cr, p.px(p.hi), p.py(0));
+  cairo_set_source_rgb(cr, 0.8, 0.15, 0.1);
+  cairo_set_line_width(cr, std::max(1.5, p.w / 600));
+  cairo_set_line_join(cr, CAIRO_LINE_JOIN_MITER);
   cairo_stroke(cr);
+}
+
+// The x ticks: the range's ends and nice values between.
+std::vector<double> x_ticks(double lo, double hi) {
   std::vector<double> ticks{lo};
   const double xstep = nice_step((hi - lo) / 5);
   // Counted, not accumulated: a step below the spacing of doubles near lo cannot loop forever.
@@ -259,27 +292,66 @@ void draw_panel(cairo_t* cr, const Panel& panel, const ColourScale& colours, dou
     }
   }
   ticks.push_back(hi);
-  const double label_y = axis_y + 0.3 * f + 1.0 * f;
+  return ticks;
+}
+
+// Axes, x ticks and their labels (without overlapping labels: the ends are always shown), and
+// the x axis's title.
+void draw_x_axis(const PlotFrame& p) {
+  cairo_t* cr = p.cr;
+  const double f = p.f;
+  cairo_set_source_rgb(cr, 0.15, 0.15, 0.15);
+  cairo_set_line_width(cr, 1);
+  cairo_move_to(cr, p.left, p.plot_top);
+  cairo_line_to(cr, p.left, p.axis_y);
+  cairo_line_to(cr, p.right, p.axis_y);
+  cairo_stroke(cr);
+  const std::vector<double> ticks = x_ticks(p.lo, p.hi);
+  const double label_y = p.axis_y + 0.3 * f + 1.0 * f;
   const double gap = 0.8 * f;
-  const double hi_left = px(hi) - 0.5 * text_width(cr, hi_label);
+  const double hi_left = p.px(p.hi) - 0.5 * text_width(cr, p.hi_label);
   double last_right = -INFINITY;
   for (std::size_t k = 0; k < ticks.size(); ++k) {
     const bool end = k == 0 || k + 1 == ticks.size();
     const std::string label = format_g(ticks[k]);
-    const double x = px(ticks[k]);
+    const double x = p.px(ticks[k]);
     const double lw = text_width(cr, label);
-    const double x0 = k == 0 ? std::max(x - 0.5 * lw, margin) : x - 0.5 * lw;
+    const double x0 = k == 0 ? std::max(x - 0.5 * lw, p.margin) : x - 0.5 * lw;
     if (!end && (x0 < last_right + gap || x0 + lw > hi_left - gap)) {
       continue;
     }
-    cairo_move_to(cr, x, axis_y);
-    cairo_line_to(cr, x, axis_y + 0.3 * f);
+    cairo_move_to(cr, x, p.axis_y);
+    cairo_line_to(cr, x, p.axis_y + 0.3 * f);
     cairo_stroke(cr);
     show_text(cr, x0, label_y, label);
     last_right = x0 + lw;
   }
   const std::string xlabel = "radius";
-  show_text(cr, 0.5 * (left + right) - 0.5 * text_width(cr, xlabel), label_y + 1.4 * f, xlabel);
+  show_text(cr, 0.5 * (p.left + p.right) - 0.5 * text_width(cr, xlabel), label_y + 1.4 * f, xlabel);
+}
+
+}  // namespace
+
+// Draws the panel in the band [top, top + histogram_height(width_px)) of the picture.
+void draw_panel(cairo_t* cr, const Panel& panel, const ColourScale& colours, double top, int width_px) {
+  const double bottom = top + histogram_height(width_px);
+  draw_captions(cr, panel, bottom, width_px);
+  if (panel.achieved.empty()) {
+    return;
+  }
+  PlotFrame frame;
+  frame.cr = cr;
+  frame.panel = &panel;
+  frame.w = width_px;
+  frame.f = font_px(width_px);
+  frame.margin = kMarginFraction * frame.w;
+  if (!plan_frame(frame, top, bottom)) {
+    return;  // too narrow a picture for a plot: the caption only
+  }
+  draw_y_axis(frame);
+  draw_bars(frame, colours);
+  draw_request(frame);
+  draw_x_axis(frame);
 }
 
 }  // namespace frontpack_tool::render_parts

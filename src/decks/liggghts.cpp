@@ -7,14 +7,17 @@
 // nothing for particles held in the plane z = 0.
 #include <algorithm>
 #include <cmath>
+#include <ostream>
 #include <sstream>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "common/format.hpp"
 #include "common/stop.hpp"
+#include "decks/physics.hpp"
 #include "frontpack/io.hpp"
 #include "frontpack/version.hpp"
-#include "decks/physics.hpp"
 
 namespace frontpack::detail {
 
@@ -73,24 +76,13 @@ std::string repeat(const std::string& value, std::size_t n) {
   return out;
 }
 
-}  // namespace
-
-std::vector<DeckFile> liggghts_deck(const Domain& domain, std::span<const Disk> disks,
-                                    std::span<const std::uint32_t> types, const DeckOptions& options,
-                                    const DeckPhysics& p) {
-  const std::uint32_t wall_type = p.types + 1;
-  const double half_z = 10 * p.rmax;
-  const Box b = domain.bbox();
-  const double margin = 2 * p.rmax;
-  // A periodic cell is the box itself (boundary p p p, or p f p with the shear cell's walls as
-  // two primitive wall planes at ymin and ymax, on the box's faces): no mesh.
-  const bool periodic = domain.periodicity() != Periodicity::none;
-  const bool torus = domain.periodicity() == Periodicity::xy;
-  const Box box = periodic ? b : Box{b.xmin - margin, b.ymin - margin, b.xmax + margin, b.ymax + margin};
-
+// deck.data: the disks as LAMMPS data in `box`, with the wall type as one more atom type, and
+// the z range of the top of this file.
+std::string deck_data(const Domain& domain, std::span<const Disk> disks, std::span<const std::uint32_t> types,
+                      const DeckOptions& options, const DeckPhysics& p, const Box& box) {
   LammpsOptions data_options;
   data_options.type_densities = p.area_density;
-  data_options.atom_types = wall_type;
+  data_options.atom_types = p.types + 1;
   data_options.periodicity = domain.periodicity();
   std::ostringstream data_stream;
   std::vector<std::uint32_t> all_types(types.begin(), types.end());
@@ -98,18 +90,25 @@ std::vector<DeckFile> liggghts_deck(const Domain& domain, std::span<const Disk> 
     all_types.assign(disks.size(), 1);
   }
   write_lammps(data_stream, disks, all_types, box, data_options, options.stop);
-  // The z range: see the top of this file.
+  const double half_z = 10 * p.rmax;
   std::string data = data_stream.str();
   const std::size_t z = data.find(" zlo zhi\n");
   const std::size_t z_start = data.rfind('\n', z) + 1;
   data.replace(z_start, z - z_start, format_double(-half_z) + ' ' + format_double(half_z));
+  return data;
+}
 
-  const std::size_t n = wall_type;
-  const std::string w = std::to_string(wall_type);
-  const std::uint64_t every = std::max<std::uint64_t>(1, options.steps / 10);
-  std::ostringstream in;
+// in.frontpack's sections, in order: what it is and the simulation's set-up, the contact model
+// and the timestep, gravity and the walls, the run.
+
+// The header comment, the atom style, dimension, boundaries, the data file and the neighbour lists.
+void input_setup(std::ostream& in, const Domain& domain, std::size_t disks, const DeckOptions& options,
+                 const DeckPhysics& p) {
+  const bool periodic = domain.periodicity() != Periodicity::none;
+  const bool torus = domain.periodicity() == Periodicity::xy;
+  const std::string w = std::to_string(p.types + 1);
   in << "# LIGGGHTS input written by frontpack " << version_string << " (run: liggghts -in in.frontpack)\n"
-     << "# " << disks.size() << " disks of types 1.." << p.types
+     << "# " << disks << " disks of types 1.." << p.types
      << (!periodic ? "; the domain's edges are the mesh walls.stl (type " + w + ").\n"
          : torus   ? " in the periodic cell (the box).\n"
                    : " in the cell periodic in x (the box); its bottom and top are wall planes (type " + w + ").\n")
@@ -126,8 +125,13 @@ std::vector<DeckFile> liggghts_deck(const Domain& domain, std::span<const Disk> 
      << "units si\n"
      << "read_data deck.data\n"
      << "neighbor " << format_double(0.5 * p.rmin) << " bin\n"
-     << "neigh_modify delay 0\n"
-     << "# Hertz contacts. Young's modulus E (Poisson 0.3) makes F = " << format_double(p.load)
+     << "neigh_modify delay 0\n";
+}
+
+// Hertz contacts between every pair of types (the walls' included), the densities and the timestep.
+void input_contacts(std::ostream& in, const DeckPhysics& p) {
+  const std::size_t n = p.types + 1;  // the disks' types and the walls'
+  in << "# Hertz contacts. Young's modulus E (Poisson 0.3) makes F = " << format_double(p.load)
      << ", the weight of a column as tall as the\n"
      << "# domain and 2 rmax wide, press two smallest disks " << format_double(p.overlap)
      << " (1% of rmin) deep: E = 2 (1 - 0.3^2) 3 F / (4 sqrt(rmin/2) d^1.5).\n"
@@ -146,6 +150,14 @@ std::vector<DeckFile> liggghts_deck(const Domain& domain, std::span<const Disk> 
      << format_double(p.mass_min / 2) << ")\n"
      << "# at the Hertz stiffness k = 2 E* sqrt(R* d) of that overlap, / 50.\n"
      << "timestep " << format_double(p.dt_hertz) << "\n";
+}
+
+// Gravity (none in a torus), and the walls: the mesh, or a shear cell's two wall planes.
+void input_walls(std::ostream& in, const Domain& domain, const DeckPhysics& p) {
+  const bool periodic = domain.periodicity() != Periodicity::none;
+  const bool torus = domain.periodicity() == Periodicity::xy;
+  const std::string w = std::to_string(p.types + 1);
+  const Box b = domain.bbox();
   in << (torus ? "# No gravity: in a torus no wall holds the disks (the whole packing would fall together).\n"
                : "fix gravity all gravity " + format_double(p.gravity) + " vector 0 -1 0\n");
   if (!periodic) {
@@ -157,6 +169,11 @@ std::vector<DeckFile> liggghts_deck(const Domain& domain, std::span<const Disk> 
        << "fix wall_top all wall/gran model hertz tangential history primitive type " << w << " yplane "
        << format_double(b.ymax) << "\n";
   }
+}
+
+// The integration in the plane, the thermo output, the dump and the run.
+void input_run(std::ostream& in, const DeckOptions& options) {
+  const std::uint64_t every = std::max<std::uint64_t>(1, options.steps / 10);
   in << "fix move all nve/sphere\n"
      << "fix plane all enforce2d\n"
      << "compute ke all ke\n"
@@ -168,11 +185,32 @@ std::vector<DeckFile> liggghts_deck(const Domain& domain, std::span<const Disk> 
      // the dump's numbers are the doubles (frontpack check on its first snapshot certifies).
      << "dump_modify free sort id format \"%d %d %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g\"\n"
      << "run " << options.steps << "\n";
+}
+
+}  // namespace
+
+std::vector<DeckFile> liggghts_deck(const Domain& domain, std::span<const Disk> disks,
+                                    std::span<const std::uint32_t> types, const DeckOptions& options,
+                                    const DeckPhysics& p) {
+  const double half_z = 10 * p.rmax;
+  const Box b = domain.bbox();
+  const double margin = 2 * p.rmax;
+  // A periodic cell is the box itself (boundary p p p, or p f p with the shear cell's walls as
+  // two primitive wall planes at ymin and ymax, on the box's faces): no mesh.
+  const bool periodic = domain.periodicity() != Periodicity::none;
+  const Box box = periodic ? b : Box{b.xmin - margin, b.ymin - margin, b.xmax + margin, b.ymax + margin};
+  std::string data = deck_data(domain, disks, types, options, p, box);
+  std::ostringstream in;
+  input_setup(in, domain, disks.size(), options, p);
+  input_contacts(in, p);
+  input_walls(in, domain, p);
+  input_run(in, options);
   if (periodic) {
-    return {{"deck.data", data}, {"in.frontpack", in.str()}};
+    return {{"deck.data", std::move(data)}, {"in.frontpack", in.str()}};
   }
-  return {
-      {"deck.data", data}, {"walls.stl", edge_mesh(domain, 0.9 * half_z, options.stop)}, {"in.frontpack", in.str()}};
+  return {{"deck.data", std::move(data)},
+          {"walls.stl", edge_mesh(domain, 0.9 * half_z, options.stop)},
+          {"in.frontpack", in.str()}};
 }
 
 }  // namespace frontpack::detail

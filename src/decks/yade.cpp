@@ -1,30 +1,26 @@
 // The Yade deck: the packing as Yade text (with material ids for types) and a script that loads
 // it, builds the wall facets from the domain's edges, holds the spheres in the plane and runs.
+#include <ostream>
 #include <sstream>
+#include <stop_token>
 #include <string>
 #include <vector>
 
 #include "common/format.hpp"
 #include "common/stop.hpp"
+#include "decks/physics.hpp"
 #include "frontpack/io.hpp"
 #include "frontpack/version.hpp"
-#include "decks/physics.hpp"
 
 namespace frontpack::detail {
 
-std::vector<DeckFile> yade_deck(const Domain& domain, std::span<const Disk> disks, std::span<const std::uint32_t> types,
-                                const DeckOptions& options, const DeckPhysics& p) {
-  std::vector<std::uint32_t> all_types(types.begin(), types.end());
-  if (all_types.empty()) {
-    all_types.assign(disks.size(), 1);
-  }
-  std::ostringstream packing;
-  write_yade(packing, disks, all_types, options.stop);
+namespace {
 
-  // Yade's FrictPhys gives kn = 2 E1 r1 E2 r2 / (E1 r1 + E2 r2): E r for two equal radii r, so
-  // E = kn / rmin gives the two smallest disks the stiffness of the LAMMPS deck.
-  const double young = p.kn / p.rmin;
-  std::ostringstream py;
+// run.py's sections, in order: what it is and the constants, the cell and the walls' rings, the
+// materials and the bodies, the engines and the run.
+
+// The header comment, the imports, STEPS, DENSITY and HALF_HEIGHT.
+void script_header(std::ostream& py, const DeckOptions& options, const DeckPhysics& p, double young) {
   py << "# Yade script written by frontpack " << version_string
      << " (run: yade -n -x run.py [STEPS], in this directory)\n"
      << "# Loads packing.txt (one material per type, O.materials[type - 1]), builds the walls as facets from\n"
@@ -45,44 +41,53 @@ std::vector<DeckFile> yade_deck(const Domain& domain, std::span<const Disk> disk
   }
   py << "]  # mass per area, by type\n"
      << "HALF_HEIGHT = " << format_double(2 * p.rmax) << "  # the facets' extent in z\n";
-  const bool periodic = domain.periodicity() != Periodicity::none;
-  if (periodic) {
-    // Yade's periodic cell wraps all three axes, from the origin: the images of a disk are its
-    // translations by the periods whatever the origin, so the cell [xmin, xmax) needs no shift.
-    // z: 10 rmax, so that no sphere meets its own image and a facet spans under half of it.
-    // A shear cell's y period is its height plus 4 rmax (the walls keep the images apart), and
-    // its walls are facets in four pieces per side (a body must span under half of the cell).
-    const Box cell = domain.bbox();
-    const bool torus = domain.periodicity() == Periodicity::xy;
-    py << "CELL = (" << format_double(cell.xmin) << ", " << format_double(cell.ymin) << ", " << format_double(cell.xmax)
-       << ", " << format_double(cell.ymax) << ")  # the periodic cell "
-       << (torus ? "[xmin, xmax) x [ymin, ymax)\n" : "[xmin, xmax) x [ymin, ymax], walls at ymin and ymax\n")
-       << "LX = CELL[2] - CELL[0]\n"
-       << "LY = CELL[3] - CELL[1]" << (torus ? "" : " + 2 * HALF_HEIGHT") << "\n"
-       << "O.periodic = True\n"
-       << "O.cell.setBox(LX, LY, 5 * HALF_HEIGHT)\n";
-    if (torus) {
-      py << "RINGS = []\n";
-    } else {
-      py << "RINGS = []\n"
-         << "WALLS = [[(CELL[0] + k * LX / 4, y), (CELL[0] + (k + 1) * LX / 4, y)] for y in (CELL[1], CELL[3]) "
-            "for k in range(4)]\n";
-    }
+}
+
+// A periodic cell: CELL, LX, LY, Yade's cell, no rings, and a shear cell's WALLS.
+void script_cell(std::ostream& py, const Domain& domain) {
+  // Yade's periodic cell wraps all three axes, from the origin: the images of a disk are its
+  // translations by the periods whatever the origin, so the cell [xmin, xmax) needs no shift.
+  // z: 10 rmax, so that no sphere meets its own image and a facet spans under half of it.
+  // A shear cell's y period is its height plus 4 rmax (the walls keep the images apart), and
+  // its walls are facets in four pieces per side (a body must span under half of the cell).
+  const Box cell = domain.bbox();
+  const bool torus = domain.periodicity() == Periodicity::xy;
+  py << "CELL = (" << format_double(cell.xmin) << ", " << format_double(cell.ymin) << ", " << format_double(cell.xmax)
+     << ", " << format_double(cell.ymax) << ")  # the periodic cell "
+     << (torus ? "[xmin, xmax) x [ymin, ymax)\n" : "[xmin, xmax) x [ymin, ymax], walls at ymin and ymax\n")
+     << "LX = CELL[2] - CELL[0]\n"
+     << "LY = CELL[3] - CELL[1]" << (torus ? "" : " + 2 * HALF_HEIGHT") << "\n"
+     << "O.periodic = True\n"
+     << "O.cell.setBox(LX, LY, 5 * HALF_HEIGHT)\n";
+  if (torus) {
+    py << "RINGS = []\n";
   } else {
-    py << "RINGS = [\n";
+    py << "RINGS = []\n"
+       << "WALLS = [[(CELL[0] + k * LX / 4, y), (CELL[0] + (k + 1) * LX / 4, y)] for y in (CELL[1], CELL[3]) "
+          "for k in range(4)]\n";
   }
-  for (const Polygon& poly : periodic ? std::vector<Polygon>{} : domain.polygons()) {
+}
+
+// A domain with walls: RINGS, every ring of the domain as a list of points.
+void script_rings(std::ostream& py, const Domain& domain, const std::stop_token& stop) {
+  py << "RINGS = [\n";
+  for (const Polygon& poly : domain.polygons()) {
     for (std::size_t r = 0; r <= poly.holes.size(); ++r) {
       const Ring& ring = r == 0 ? poly.outer : poly.holes[r - 1];
       py << "    [";
       for (std::size_t i = 0; i < ring.size(); ++i) {
-        throw_if_stopped(options.stop, i);
+        throw_if_stopped(stop, i);
         py << (i == 0 ? "" : ", ") << '(' << format_double(ring[i].x) << ", " << format_double(ring[i].y) << ')';
       }
       py << "],\n";
     }
   }
-  py << (periodic ? "\n" : "]\n\n") << "for rho in DENSITY:\n"
+}
+
+// The materials (one per type, and the walls'), the spheres held in the plane, and the facets of
+// the rings and of a shear cell's walls.
+void script_bodies(std::ostream& py, const Domain& domain, double young) {
+  py << "for rho in DENSITY:\n"
      << "    O.materials.append(FrictMat(young=" << format_double(young)
      << ", poisson=0.3, frictionAngle=math.atan(0.5), density=rho))\n"
      << "wall_material = O.materials.append(FrictMat(young=" << format_double(young)
@@ -109,6 +114,12 @@ std::vector<DeckFile> yade_deck(const Domain& domain, std::span<const Disk> disk
        << "    O.bodies.append(utils.facet([a0, b0, b1], fixed=True, material=wall_material))\n"
        << "    O.bodies.append(utils.facet([a0, b1, a1], fixed=True, material=wall_material))\n";
   }
+}
+
+// The engines, the run (in a periodic cell, the contacts after the first step are printed) and
+// the final state written to final.txt.
+void script_run(std::ostream& py, const Domain& domain, const DeckPhysics& p) {
+  const bool periodic = domain.periodicity() != Periodicity::none;
   py << "\n"
      << "O.engines = [\n"
      << "    ForceResetter(),\n"
@@ -132,6 +143,33 @@ std::vector<DeckFile> yade_deck(const Domain& domain, std::span<const Disk> disk
      << "        if isinstance(b.shape, Sphere):\n"
      << "            f.write('%r %r %r %d\\n' % (b.state.pos[0], b.state.pos[1], b.shape.radius, b.material.id + 1))\n"
      << "print('FRONTPACK_DONE %d steps, %d spheres' % (O.iter, len(spheres)))\n";
+}
+
+}  // namespace
+
+std::vector<DeckFile> yade_deck(const Domain& domain, std::span<const Disk> disks, std::span<const std::uint32_t> types,
+                                const DeckOptions& options, const DeckPhysics& p) {
+  std::vector<std::uint32_t> all_types(types.begin(), types.end());
+  if (all_types.empty()) {
+    all_types.assign(disks.size(), 1);
+  }
+  std::ostringstream packing;
+  write_yade(packing, disks, all_types, options.stop);
+
+  // Yade's FrictPhys gives kn = 2 E1 r1 E2 r2 / (E1 r1 + E2 r2): E r for two equal radii r, so
+  // E = kn / rmin gives the two smallest disks the stiffness of the LAMMPS deck.
+  const double young = p.kn / p.rmin;
+  std::ostringstream py;
+  script_header(py, options, p, young);
+  if (domain.periodicity() != Periodicity::none) {
+    script_cell(py, domain);
+    py << "\n";
+  } else {
+    script_rings(py, domain, options.stop);
+    py << "]\n\n";
+  }
+  script_bodies(py, domain, young);
+  script_run(py, domain, p);
   return {{"packing.txt", packing.str()}, {"run.py", py.str()}};
 }
 

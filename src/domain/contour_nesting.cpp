@@ -128,78 +128,96 @@ Domain polygons_to_domain(std::vector<Polygon> polygons, const std::vector<std::
   }
 }
 
-Domain nest_contours(const std::vector<Contour>& contours, const DomainReadOptions& options, const std::string& source,
-                     std::vector<CurveReport>& curves) {
-  if (contours.empty()) {
-    throw DomainFileError(DomainFileError::Kind::empty,
-                          "no closed contour: expected closed LWPOLYLINE or POLYLINE, CIRCLE, or LINE and ARC "
-                          "entities that join into closed contours",
-                          source);
-  }
-  // Every curve's segment count is known before any is split: their sum is held to the budget
-  // first, so that a tiny deviation is refused with its figure instead of filling the memory.
+namespace {
+
+// Every curve's segment count is known before any is split: their sum is held to the budget
+// first, so that a tiny deviation is refused with its figure instead of filling the memory.
+void check_segments(const std::vector<Contour>& contours, const DomainReadOptions& options) {
   double segments = 0;
   for (const Contour& c : contours) {
     segments += contour_segments(c, options);
   }
   check_count(options.budget, segments, kBytesPerCurveSegment, "curve segments",
               "use a larger max_deviation (--max-deviation)");
+}
+
+// Each contour alone, with chords: validated (a contour that crosses itself is named here), its
+// exact orientation, and a point of it to locate in the others.
+struct Alone {
+  std::vector<Domain> domains;
+  std::vector<int> orientation;
+  std::vector<Point> probe;
+};
+
+Alone each_alone(const std::vector<Contour>& contours, const DomainReadOptions& options, const std::string& source) {
   const std::size_t n = contours.size();
-  // Each contour alone, with chords: validated (a contour that crosses itself is named here), its
-  // exact orientation, and a point of it to locate in the others.
-  std::vector<Domain> alone;
-  std::vector<int> orientation(n, 0);
-  std::vector<Point> probe(n);
-  alone.reserve(n);
+  Alone alone{{}, std::vector<int>(n, 0), std::vector<Point>(n)};
+  alone.domains.reserve(n);
   for (std::size_t i = 0; i < n; ++i) {
     const Built chords = build_ring(contours[i], options, [](double) { return true; });
-    orientation[i] = ring_sign(chords.ring);
-    probe[i] = chords.ring.empty() ? Point{} : chords.ring.front();
+    alone.orientation[i] = ring_sign(chords.ring);
+    alone.probe[i] = chords.ring.empty() ? Point{} : chords.ring.front();
     try {
-      alone.push_back(Domain::from_rings(chords.ring));
+      alone.domains.push_back(Domain::from_rings(chords.ring));
     } catch (const InvalidDomainError& e) {
       throw InvalidDomainError(e.kind(), "'" + source + "', " + contours[i].describe() + ": " + invalid_detail(e),
                                e.site(), e.other_site(), e.where());
     }
   }
-  // Depth: how many contours hold this one's point. Touching or crossing contours have a point of
-  // one on the other, or are reported by the validation of the whole domain below.
+  return alone;
+}
+
+// Depth: how many contours hold this one's point, and which. Touching or crossing contours have a
+// point of one on the other, or are reported by the validation of the whole domain later.
+struct Nesting {
+  std::vector<std::size_t> depth;
+  std::vector<std::vector<std::size_t>> holders;
+};
+
+Nesting nesting_of(const std::vector<Contour>& contours, const Alone& alone, const std::string& source) {
+  const std::size_t n = contours.size();
   std::vector<Box> boxes;
   boxes.reserve(n);
-  for (const Domain& d : alone) {
+  for (const Domain& d : alone.domains) {
     boxes.push_back(d.bbox());
   }
-  std::vector<std::size_t> depth(n, 0);
-  std::vector<std::vector<std::size_t>> holders(n);
+  Nesting nest{std::vector<std::size_t>(n, 0), std::vector<std::vector<std::size_t>>(n)};
   for (std::size_t i = 0; i < n; ++i) {
     for (std::size_t j = 0; j < n; ++j) {
       const Box b = boxes[j];
-      const Point q = probe[i];
+      const Point q = alone.probe[i];
       if (i == j || q.x < b.xmin || q.x > b.xmax || q.y < b.ymin || q.y > b.ymax) {
         continue;  // a point outside a contour's box is outside the contour
       }
-      const Location where = alone[j].locate(q);
+      const Location where = alone.domains[j].locate(q);
       if (where == Location::boundary) {
         throw InvalidDomainError(InvalidDomainError::Kind::rings_cross,
                                  "'" + source + "', " + contours[i].describe() + " and " + contours[j].describe() +
-                                     ": the contours touch or cross at " + format_point(probe[i]),
-                                 {}, std::nullopt, probe[i]);
+                                     ": the contours touch or cross at " + format_point(q),
+                                 {}, std::nullopt, q);
       }
       if (where == Location::inside) {
-        ++depth[i];
-        holders[i].push_back(j);
+        ++nest.depth[i];
+        nest.holders[i].push_back(j);
       }
     }
   }
-  // Outer contours (even depth) start polygons, in contour order; a hole joins the polygon of the
-  // contour one level up that holds it.
+  return nest;
+}
+
+// Outer contours (even depth) start polygons, in contour order; a hole joins the polygon of the
+// contour one level up that holds it. Each ring is built with its arcs bulging to the side that
+// keeps the curve's centre where the contour's role puts it.
+Domain assemble(const std::vector<Contour>& contours, const DomainReadOptions& options, const std::string& source,
+                const Alone& alone, const Nesting& nest, std::vector<CurveReport>& curves) {
+  const std::size_t n = contours.size();
   std::vector<std::optional<std::size_t>> part_of(n);
   std::vector<Polygon> polygons;
   std::vector<std::vector<std::string>> names;
   std::vector<Built> built(n);
   for (std::size_t i = 0; i < n; ++i) {
-    const bool outer = depth[i] % 2 == 0;
-    const int turn = orientation[i];
+    const bool outer = nest.depth[i] % 2 == 0;
+    const int turn = alone.orientation[i];
     built[i] = build_ring(contours[i], options, [outer, turn](double sweep) {
       const bool centre_inside_contour = (sweep > 0 ? 1 : -1) == turn;
       return centre_inside_contour == outer;
@@ -211,13 +229,13 @@ Domain nest_contours(const std::vector<Contour>& contours, const DomainReadOptio
     }
   }
   for (std::size_t i = 0; i < n; ++i) {
-    if (depth[i] % 2 == 0) {
+    if (nest.depth[i] % 2 == 0) {
       polygons[*part_of[i]].outer = built[i].ring;
       continue;
     }
     std::optional<std::size_t> parent;
-    for (const std::size_t j : holders[i]) {
-      if (depth[j] + 1 == depth[i]) {
+    for (const std::size_t j : nest.holders[i]) {
+      if (nest.depth[j] + 1 == nest.depth[i]) {
         parent = j;
       }
     }
@@ -225,7 +243,7 @@ Domain nest_contours(const std::vector<Contour>& contours, const DomainReadOptio
       throw InvalidDomainError(
           InvalidDomainError::Kind::rings_cross,
           "'" + source + "', " + contours[i].describe() + ": the contours around it cross each other", {}, std::nullopt,
-          probe[i]);
+          alone.probe[i]);
     }
     polygons[*part_of[*parent]].holes.push_back(built[i].ring);
     names[*part_of[*parent]].push_back(contours[i].describe());
@@ -234,6 +252,22 @@ Domain nest_contours(const std::vector<Contour>& contours, const DomainReadOptio
     curves.insert(curves.end(), b.curves.begin(), b.curves.end());
   }
   return polygons_to_domain(std::move(polygons), names, source);
+}
+
+}  // namespace
+
+Domain nest_contours(const std::vector<Contour>& contours, const DomainReadOptions& options, const std::string& source,
+                     std::vector<CurveReport>& curves) {
+  if (contours.empty()) {
+    throw DomainFileError(DomainFileError::Kind::empty,
+                          "no closed contour: expected closed LWPOLYLINE or POLYLINE, CIRCLE, or LINE and ARC "
+                          "entities that join into closed contours",
+                          source);
+  }
+  check_segments(contours, options);
+  const Alone alone = each_alone(contours, options, source);
+  const Nesting nest = nesting_of(contours, alone, source);
+  return assemble(contours, options, source, alone, nest, curves);
 }
 
 }  // namespace frontpack::detail

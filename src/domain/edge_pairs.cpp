@@ -238,6 +238,7 @@ void Validator::classify_unless_hub(std::uint32_t e, std::uint32_t f) {
   classify(e, f);
 }
 
+// Edges e < f, classified by the exact orientations of each one's ends against the other.
 void Validator::classify(std::uint32_t e, std::uint32_t f) {
   if (f < e) {
     std::swap(e, f);  // name the edges in input order
@@ -246,84 +247,20 @@ void Validator::classify(std::uint32_t e, std::uint32_t f) {
   const Point B = rs_.v[rs_.next[e]];
   const Point C = rs_.v[f];
   const Point D = rs_.v[rs_.next[f]];
-  const std::uint32_t re = rs_.ring_of[e];
-  const std::uint32_t rf = rs_.ring_of[f];
-  const bool same_ring = re == rf;
-
-  if (same_ring && (rs_.next[e] == f || rs_.next[f] == e)) {
-    // Consecutive edges p -> s -> q meet at s; they overlap only if q folds back onto p's side.
-    const bool e_first = rs_.next[e] == f;
-    const Point p = e_first ? A : C;
-    const Point s = e_first ? B : A;
-    const Point q = e_first ? D : B;
-    const std::uint32_t at = e_first ? f : e;
-    if (orientation(p, s, q) == 0 && dot_sign(s, p, q) > 0 && improves(e, f, 0)) {
-      report(e, f, Kind::self_intersection,
-             name(re) + ": " + edge(e) + " and " + edge(f) + " fold back on each other at " + vertex(at) +
-                 " (a zero-width spike)",
-             s, 0);
-    }
+  if (rs_.ring_of[e] == rs_.ring_of[f] && (rs_.next[e] == f || rs_.next[f] == e)) {
+    classify_consecutive(e, f);
     return;
   }
-
   const int o1 = orientation(A, B, C);
   const int o2 = orientation(A, B, D);
   if (o1 == 0 && o2 == 0) {
-    // Collinear: compare the two intervals on the line along a non-degenerate axis.
-    const bool use_x = A.x != B.x;
-    const auto lo_hi = [use_x](Point a, Point b) {
-      const double s = use_x ? a.x : a.y;
-      const double t = use_x ? b.x : b.y;
-      return std::pair{std::min(s, t), std::max(s, t)};
-    };
-    const auto [l1, h1] = lo_hi(A, B);
-    const auto [l2, h2] = lo_hi(C, D);
-    const double lo = std::max(l1, l2);
-    const double hi = std::min(h1, h2);
-    if (lo > hi) {
-      return;
-    }
-    if (lo < hi) {
-      if (same_ring) {
-        if (improves(e, f)) {
-          report(e, f, Kind::self_intersection, name(re) + ": " + edge(e) + " and " + edge(f) + " overlap", {});
-        }
-      } else if (improves(e, f)) {
-        report(e, f, Kind::rings_overlap,
-               name(re) + " and " + name(rf) + " share a segment: " + edge(e) + " of the first overlaps " + edge(f) +
-                   " of the second",
-               {});
-      }
-      return;
-    }
-    // A single common point: an endpoint of both.
-    const Point t = (A == C || A == D) ? A : B;
-    touch(e, f, t);
+    classify_collinear(e, f);
     return;
   }
   const int o3 = orientation(C, D, A);
   const int o4 = orientation(C, D, B);
   if (o1 * o2 < 0 && o3 * o4 < 0) {
-    if (!improves(e, f)) {
-      return;
-    }
-    const auto x =
-        CGAL::intersection(Kernel::Segment_2(to_cgal(A), to_cgal(B)), Kernel::Segment_2(to_cgal(C), to_cgal(D)));
-    std::optional<Point> at;
-    if (x) {
-      if (const auto* pt = boost::get<KPoint>(&*x)) {
-        at = Point{pt->x(), pt->y()};
-      }
-    }
-    const std::string near = at ? " near " + format_point_approx(*at) : "";
-    if (same_ring) {
-      report(e, f, Kind::self_intersection, name(re) + ": " + edge(e) + " and " + edge(f) + " cross" + near, at);
-    } else {
-      report(e, f, Kind::rings_cross,
-             name(re) + " and " + name(rf) + " cross: " + edge(e) + " of the first crosses " + edge(f) +
-                 " of the second" + near,
-             at);
-    }
+    report_crossing(e, f);
     return;
   }
   std::optional<Point> t;
@@ -338,6 +275,93 @@ void Validator::classify(std::uint32_t e, std::uint32_t f) {
   }
   if (t) {
     touch(e, f, *t);
+  }
+}
+
+void Validator::classify_consecutive(std::uint32_t e, std::uint32_t f) {
+  const Point A = rs_.v[e];
+  const Point B = rs_.v[rs_.next[e]];
+  const Point C = rs_.v[f];
+  const Point D = rs_.v[rs_.next[f]];
+  // Consecutive edges p -> s -> q meet at s; they overlap only if q folds back onto p's side.
+  const bool e_first = rs_.next[e] == f;
+  const Point p = e_first ? A : C;
+  const Point s = e_first ? B : A;
+  const Point q = e_first ? D : B;
+  const std::uint32_t at = e_first ? f : e;
+  if (orientation(p, s, q) == 0 && dot_sign(s, p, q) > 0 && improves(e, f, 0)) {
+    report(e, f, Kind::self_intersection,
+           name(rs_.ring_of[e]) + ": " + edge(e) + " and " + edge(f) + " fold back on each other at " + vertex(at) +
+               " (a zero-width spike)",
+           s, 0);
+  }
+}
+
+void Validator::classify_collinear(std::uint32_t e, std::uint32_t f) {
+  const Point A = rs_.v[e];
+  const Point B = rs_.v[rs_.next[e]];
+  const Point C = rs_.v[f];
+  const Point D = rs_.v[rs_.next[f]];
+  const std::uint32_t re = rs_.ring_of[e];
+  const std::uint32_t rf = rs_.ring_of[f];
+  // Compare the two intervals on the line along a non-degenerate axis.
+  const bool use_x = A.x != B.x;
+  const auto lo_hi = [use_x](Point a, Point b) {
+    const double s = use_x ? a.x : a.y;
+    const double t = use_x ? b.x : b.y;
+    return std::pair{std::min(s, t), std::max(s, t)};
+  };
+  const auto [l1, h1] = lo_hi(A, B);
+  const auto [l2, h2] = lo_hi(C, D);
+  const double lo = std::max(l1, l2);
+  const double hi = std::min(h1, h2);
+  if (lo > hi) {
+    return;
+  }
+  if (lo < hi) {
+    if (re == rf) {
+      if (improves(e, f)) {
+        report(e, f, Kind::self_intersection, name(re) + ": " + edge(e) + " and " + edge(f) + " overlap", {});
+      }
+    } else if (improves(e, f)) {
+      report(e, f, Kind::rings_overlap,
+             name(re) + " and " + name(rf) + " share a segment: " + edge(e) + " of the first overlaps " + edge(f) +
+                 " of the second",
+             {});
+    }
+    return;
+  }
+  // A single common point: an endpoint of both.
+  const Point t = (A == C || A == D) ? A : B;
+  touch(e, f, t);
+}
+
+void Validator::report_crossing(std::uint32_t e, std::uint32_t f) {
+  if (!improves(e, f)) {
+    return;
+  }
+  const Point A = rs_.v[e];
+  const Point B = rs_.v[rs_.next[e]];
+  const Point C = rs_.v[f];
+  const Point D = rs_.v[rs_.next[f]];
+  const std::uint32_t re = rs_.ring_of[e];
+  const std::uint32_t rf = rs_.ring_of[f];
+  const auto x =
+      CGAL::intersection(Kernel::Segment_2(to_cgal(A), to_cgal(B)), Kernel::Segment_2(to_cgal(C), to_cgal(D)));
+  std::optional<Point> at;
+  if (x) {
+    if (const auto* pt = boost::get<KPoint>(&*x)) {
+      at = Point{pt->x(), pt->y()};
+    }
+  }
+  const std::string near = at ? " near " + format_point_approx(*at) : "";
+  if (re == rf) {
+    report(e, f, Kind::self_intersection, name(re) + ": " + edge(e) + " and " + edge(f) + " cross" + near, at);
+  } else {
+    report(e, f, Kind::rings_cross,
+           name(re) + " and " + name(rf) + " cross: " + edge(e) + " of the first crosses " + edge(f) +
+               " of the second" + near,
+           at);
   }
 }
 

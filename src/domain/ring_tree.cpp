@@ -109,65 +109,64 @@ class Chains {
   std::vector<Point> points_;
 };
 
-}  // namespace
+// Each ring's smallest vertex (where two of its chains start), the two chains that start there,
+// and its orientation.
+struct RingStarts {
+  std::vector<std::uint32_t> lowest;
+  std::vector<std::uint32_t> forward;   // r's chain from lowest[r] along the ring's direction
+  std::vector<std::uint32_t> backward;  // and against it
+  std::vector<std::uint8_t> anticlockwise;
 
-std::vector<std::uint32_t> ring_parents(const RingSet& rs) {
-  const std::size_t rings = rs.rings.size();
-  std::vector<std::uint32_t> parent(rings, no_ring);
-  if (rings < 2) {
-    return parent;
-  }
-  Chains geometry(rs);
+  explicit RingStarts(std::size_t rings) : lowest(rings), forward(rings), backward(rings), anticlockwise(rings) {}
+};
 
-  // The chains, each ring's smallest vertex (where two of its chains start) and its orientation
-  // (exact at that vertex: its neighbours lie on the same side, and a fold there is a spike,
-  // which validation rejected before).
-  std::vector<std::uint32_t> lowest(rings);
-  std::vector<std::uint32_t> forward(rings);   // r's chain from lowest[r] along the ring's direction
-  std::vector<std::uint32_t> backward(rings);  // and against it
-  std::vector<std::uint8_t> anticlockwise(rings);
-  for (std::uint32_t r = 0; r < rings; ++r) {
-    const RingInfo& info = rs.rings[r];
-    const auto up = [&rs](std::uint32_t e) { return lex_less(rs.v[e], rs.v[rs.next[e]]); };
-    std::uint32_t m = info.first;
-    std::uint32_t turn = info.first;  // a vertex where the edges turn from down to up
-    for (std::uint32_t k = info.first; k < info.first + info.count; ++k) {
-      if (lex_less(rs.v[k], rs.v[m])) {
-        m = k;
-      }
-      if (up(k) && !up(rs.prev[k])) {
-        turn = k;
-      }
+// Cuts ring r into its chains, and records its start and orientation (exact at its smallest
+// vertex: its neighbours lie on the same side, and a fold there is a spike, which validation
+// rejected before).
+void cut_ring(const RingSet& rs, std::uint32_t r, Chains& geometry, RingStarts& starts) {
+  const RingInfo& info = rs.rings[r];
+  const auto up = [&rs](std::uint32_t e) { return lex_less(rs.v[e], rs.v[rs.next[e]]); };
+  std::uint32_t m = info.first;
+  std::uint32_t turn = info.first;  // a vertex where the edges turn from down to up
+  for (std::uint32_t k = info.first; k < info.first + info.count; ++k) {
+    if (lex_less(rs.v[k], rs.v[m])) {
+      m = k;
     }
-    lowest[r] = m;
-    anticlockwise[r] = orientation(rs.v[rs.prev[m]], rs.v[m], rs.v[rs.next[m]]) > 0 ? 1 : 0;
-    // Runs of edges going the same way, from `turn` once round the ring.
-    const std::uint32_t start = turn - info.first;
-    std::uint32_t run = start;
-    bool run_up = true;
-    for (std::uint32_t i = 1; i <= info.count; ++i) {
-      const std::uint32_t k = info.first + (start + i) % info.count;
-      if (i < info.count && up(k) == run_up) {
-        continue;
-      }
-      const std::uint32_t end = start + i;  // the run is edges [run, end)
-      geometry.add(r, run, end - run, run_up);
-      const auto c = static_cast<std::uint32_t>(geometry.all().size() - 1);
-      if (geometry.vertex(geometry.all()[c], 0) == m) {
-        (run_up ? forward : backward)[r] = c;
-      }
-      run = end;
-      run_up = !run_up;
+    if (up(k) && !up(rs.prev[k])) {
+      turn = k;
     }
   }
+  starts.lowest[r] = m;
+  starts.anticlockwise[r] = orientation(rs.v[rs.prev[m]], rs.v[m], rs.v[rs.next[m]]) > 0 ? 1 : 0;
+  // Runs of edges going the same way, from `turn` once round the ring.
+  const std::uint32_t start = turn - info.first;
+  std::uint32_t run = start;
+  bool run_up = true;
+  for (std::uint32_t i = 1; i <= info.count; ++i) {
+    const std::uint32_t k = info.first + (start + i) % info.count;
+    if (i < info.count && up(k) == run_up) {
+      continue;
+    }
+    const std::uint32_t end = start + i;  // the run is edges [run, end)
+    geometry.add(r, run, end - run, run_up);
+    const auto c = static_cast<std::uint32_t>(geometry.all().size() - 1);
+    if (geometry.vertex(geometry.all()[c], 0) == m) {
+      (run_up ? starts.forward : starts.backward)[r] = c;
+    }
+    run = end;
+    run_up = !run_up;
+  }
+}
+
+struct Event {
+  Point p;
+  bool enters;
+  std::uint32_t chain;
+};
+
+// Events: a chain leaves at its last point, enters at its first; at one point, leaving first.
+std::vector<Event> sweep_events(const Chains& geometry) {
   const std::vector<Chain>& chains = geometry.all();
-
-  // Events: a chain leaves at its last point, enters at its first; at one point, leaving first.
-  struct Event {
-    Point p;
-    bool enters;
-    std::uint32_t chain;
-  };
   std::vector<Event> events;
   events.reserve(2 * chains.size());
   for (std::uint32_t c = 0; c < chains.size(); ++c) {
@@ -180,13 +179,25 @@ std::vector<std::uint32_t> ring_parents(const RingSet& rs) {
     }
     return std::tie(a.enters, a.chain) < std::tie(b.enters, b.chain);
   });
+  return events;
+}
 
+// link[r]: the ring whose chain lies below r's start (no_ring: none); inside[r]: whether r starts
+// inside it.
+struct Links {
+  std::vector<std::uint32_t> link;
+  std::vector<std::uint8_t> inside;
+};
+
+// The sweep: at each event point the chains leave and enter the status, then each ring starting
+// there finds the chain below its lower starting chain.
+Links sweep(const RingSet& rs, const Chains& geometry, const RingStarts& starts) {
+  const std::vector<Chain>& chains = geometry.all();
+  const std::vector<Event> events = sweep_events(geometry);
   const auto less = [&](std::uint32_t a, std::uint32_t b) { return a != b && geometry.below(chains[a], chains[b]); };
   std::set<std::uint32_t, decltype(less)> status(less);
   std::vector<decltype(status)::iterator> where(chains.size(), status.end());
-  // link[r]: the ring whose chain lies below r's start; inside[r]: whether r starts inside it.
-  std::vector<std::uint32_t> link(rings, no_ring);
-  std::vector<std::uint8_t> inside(rings, 0);
+  Links links{std::vector<std::uint32_t>(rs.rings.size(), no_ring), std::vector<std::uint8_t>(rs.rings.size(), 0)};
   std::vector<std::uint32_t> starting;  // rings whose smallest vertex is the current point
   for (std::size_t i = 0; i < events.size();) {
     std::size_t j = i;
@@ -202,16 +213,16 @@ std::vector<std::uint32_t> ring_parents(const RingSet& rs) {
         throw std::logic_error("ring_parents: two edges overlap (validation should have rejected them)");
       }
       where[c] = it;
-      if (forward[chains[c].ring] == c) {
+      if (starts.forward[chains[c].ring] == c) {
         starting.push_back(chains[c].ring);
       }
     }
     for (const std::uint32_t r : starting) {
       // Both of r's chains at m are in; the lower is the one along the ring's direction if the
       // previous vertex lies above the edge to the next.
-      const std::uint32_t m = lowest[r];
+      const std::uint32_t m = starts.lowest[r];
       const bool forward_lower = orientation(rs.v[m], rs.v[rs.next[m]], rs.v[rs.prev[m]]) > 0;
-      const auto it = where[forward_lower ? forward[r] : backward[r]];
+      const auto it = where[forward_lower ? starts.forward[r] : starts.backward[r]];
       if (it == status.begin()) {
         continue;  // nothing below: outermost
       }
@@ -219,14 +230,20 @@ std::vector<std::uint32_t> ring_parents(const RingSet& rs) {
       // The interior of ring s lies left of its edges if s is anticlockwise; left of an edge taken
       // in sweep order is its upper side, and f's edges run in sweep order along the ring's
       // direction if f is forward.
-      link[r] = f.ring;
-      inside[r] = (f.forward == (anticlockwise[f.ring] != 0)) ? 1 : 0;
+      links.link[r] = f.ring;
+      links.inside[r] = (f.forward == (starts.anticlockwise[f.ring] != 0)) ? 1 : 0;
     }
     i = j;
   }
+  return links;
+}
 
-  // parent[r] = s when r starts inside s, else parent[s]. The links go to rings whose chain lies
-  // below r's start, met earlier in the sweep (or at the same point, lower), so they end.
+// parent[r] = s when r starts inside s, else parent[s]. The links go to rings whose chain lies
+// below r's start, met earlier in the sweep (or at the same point, lower), so they end.
+void resolve_parents(const Links& links, std::vector<std::uint32_t>& parent) {
+  const std::vector<std::uint32_t>& link = links.link;
+  const std::vector<std::uint8_t>& inside = links.inside;
+  const std::size_t rings = parent.size();
   std::vector<std::uint8_t> state(rings, 0);  // 0 new, 1 on the chain being resolved, 2 done
   std::vector<std::uint32_t> pending;
   for (std::uint32_t r = 0; r < rings; ++r) {
@@ -249,6 +266,22 @@ std::vector<std::uint32_t> ring_parents(const RingSet& rs) {
     }
     pending.clear();
   }
+}
+
+}  // namespace
+
+std::vector<std::uint32_t> ring_parents(const RingSet& rs) {
+  const std::size_t rings = rs.rings.size();
+  std::vector<std::uint32_t> parent(rings, no_ring);
+  if (rings < 2) {
+    return parent;
+  }
+  Chains geometry(rs);
+  RingStarts starts(rings);
+  for (std::uint32_t r = 0; r < rings; ++r) {
+    cut_ring(rs, r, geometry, starts);
+  }
+  resolve_parents(sweep(rs, geometry, starts), parent);
   return parent;
 }
 

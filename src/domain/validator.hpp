@@ -182,6 +182,11 @@ class Validator {
   void classify_unless_hub(std::uint32_t e, std::uint32_t f);
 
   void classify(std::uint32_t e, std::uint32_t f);
+  // classify()'s cases, for e < f: consecutive edges of one ring (a fold back is a spike),
+  // collinear edges (an overlap, or a touch at a common endpoint), and edges that cross.
+  void classify_consecutive(std::uint32_t e, std::uint32_t f);
+  void classify_collinear(std::uint32_t e, std::uint32_t f);
+  void report_crossing(std::uint32_t e, std::uint32_t f);
 
   void touch(std::uint32_t e, std::uint32_t f, Point t);
 

@@ -77,6 +77,9 @@ class VtpFile {
 
   void scan();
   std::size_t start_tag(std::size_t lt, std::vector<std::string_view>& stack);
+  void vtk_file_tag(std::string_view name, const std::vector<Attribute>& attrs, std::size_t lt);
+  void piece_tag(const std::vector<Attribute>& attrs, std::size_t lt);
+  void data_array_tag(const std::vector<Attribute>& attrs, std::size_t lt, bool coordinates);
   std::vector<Attribute> attributes(std::string_view body, std::size_t at) const;
   std::vector<double> values(const ArrayRef& a, std::uint64_t count) const;
   std::vector<double> ascii_values(const ArrayRef& a, VtkType type, std::uint64_t count) const;
@@ -160,53 +163,13 @@ std::size_t VtpFile::start_tag(std::size_t lt, std::vector<std::string_view>& st
   const std::vector<Attribute> attrs = attributes(body.substr(name_end), lt);
   const std::string_view parent = stack.empty() ? std::string_view() : stack.back();
   if (stack.empty()) {
-    if (name != "VTKFile") {
-      fail(Kind::syntax, lt, "expected <VTKFile> as the root element, got " + detail::quote_text(name));
-    }
-    const std::string type = attr(attrs, "type");
-    if (type != "PolyData") {
-      fail(Kind::unsupported_format, lt,
-           "<VTKFile type=" + detail::quote_text(type) + ">: frontpack reads VTK PolyData (.vtp) files");
-    }
-    const std::string order = attr(attrs, "byte_order", "LittleEndian");
-    const std::string header = attr(attrs, "header_type", "UInt32");
-    if ((order != "LittleEndian" && order != "BigEndian") || (header != "UInt32" && header != "UInt64")) {
-      fail(Kind::unsupported_format, lt,
-           "<VTKFile>: byte_order " + detail::quote_text(order) + ", header_type " + detail::quote_text(header) +
-               " (expected LittleEndian or BigEndian, UInt32 or UInt64)");
-    }
-    layout_ = {header == "UInt64", order == "BigEndian"};
-    compressor_ = attr(attrs, "compressor");
-    vtk_file_ = true;
+    vtk_file_tag(name, attrs, lt);
   } else if (name == "PolyData" && parent == "VTKFile") {
     poly_data_ = true;
   } else if (name == "Piece" && parent == "PolyData") {
-    Piece piece;
-    piece.at = lt;
-    const std::string n = attr(attrs, "NumberOfPoints", "0");
-    const detail::Decimal d = detail::parse_decimal(n);
-    if (d.status != detail::DecimalStatus::ok || !(d.value >= 0) ||
-        d.value != static_cast<double>(static_cast<std::uint64_t>(d.value)) || d.value > 1e12) {
-      fail(Kind::bad_number, lt, "<Piece NumberOfPoints=" + detail::quote_text(n) + ">: expected a whole number");
-    }
-    piece.points = static_cast<std::uint64_t>(d.value);
-    pieces_.push_back(std::move(piece));
+    piece_tag(attrs, lt);
   } else if (name == "DataArray" && (parent == "Points" || parent == "PointData") && !pieces_.empty()) {
-    ArrayRef a{attr(attrs, "Name"),
-               attr(attrs, "type"),
-               attr(attrs, "format"),
-               attr(attrs, "offset"),
-               attr(attrs, "NumberOfComponents", "1"),
-               lt,
-               {}};
-    Piece& piece = pieces_.back();
-    if (parent == "Points") {
-      piece.coordinates = std::move(a);
-      open_ = {pieces_.size() - 1, 0, true, true};
-    } else {
-      piece.point_data.push_back(std::move(a));
-      open_ = {pieces_.size() - 1, piece.point_data.size() - 1, false, true};
-    }
+    data_array_tag(attrs, lt, parent == "Points");
   } else if (name == "AppendedData" && parent == "VTKFile") {
     appended_encoding_ = attr(attrs, "encoding");
     const std::size_t underscore = s_.find_first_not_of(" \t\r\n", gt + 1);
@@ -222,6 +185,61 @@ std::size_t VtpFile::start_tag(std::size_t lt, std::vector<std::string_view>& st
     open_.open = false;
   }
   return gt + 1;
+}
+
+// The root element: a VTKFile of PolyData, its byte order, header type and compressor.
+void VtpFile::vtk_file_tag(std::string_view name, const std::vector<Attribute>& attrs, std::size_t lt) {
+  if (name != "VTKFile") {
+    fail(Kind::syntax, lt, "expected <VTKFile> as the root element, got " + detail::quote_text(name));
+  }
+  const std::string type = attr(attrs, "type");
+  if (type != "PolyData") {
+    fail(Kind::unsupported_format, lt,
+         "<VTKFile type=" + detail::quote_text(type) + ">: frontpack reads VTK PolyData (.vtp) files");
+  }
+  const std::string order = attr(attrs, "byte_order", "LittleEndian");
+  const std::string header = attr(attrs, "header_type", "UInt32");
+  if ((order != "LittleEndian" && order != "BigEndian") || (header != "UInt32" && header != "UInt64")) {
+    fail(Kind::unsupported_format, lt,
+         "<VTKFile>: byte_order " + detail::quote_text(order) + ", header_type " + detail::quote_text(header) +
+             " (expected LittleEndian or BigEndian, UInt32 or UInt64)");
+  }
+  layout_ = {header == "UInt64", order == "BigEndian"};
+  compressor_ = attr(attrs, "compressor");
+  vtk_file_ = true;
+}
+
+// A Piece of PolyData and its number of points.
+void VtpFile::piece_tag(const std::vector<Attribute>& attrs, std::size_t lt) {
+  Piece piece;
+  piece.at = lt;
+  const std::string n = attr(attrs, "NumberOfPoints", "0");
+  const detail::Decimal d = detail::parse_decimal(n);
+  if (d.status != detail::DecimalStatus::ok || !(d.value >= 0) ||
+      d.value != static_cast<double>(static_cast<std::uint64_t>(d.value)) || d.value > 1e12) {
+    fail(Kind::bad_number, lt, "<Piece NumberOfPoints=" + detail::quote_text(n) + ">: expected a whole number");
+  }
+  piece.points = static_cast<std::uint64_t>(d.value);
+  pieces_.push_back(std::move(piece));
+}
+
+// A DataArray of the last piece's Points (the coordinates) or PointData: its text is read next.
+void VtpFile::data_array_tag(const std::vector<Attribute>& attrs, std::size_t lt, bool coordinates) {
+  ArrayRef a{attr(attrs, "Name"),
+             attr(attrs, "type"),
+             attr(attrs, "format"),
+             attr(attrs, "offset"),
+             attr(attrs, "NumberOfComponents", "1"),
+             lt,
+             {}};
+  Piece& piece = pieces_.back();
+  if (coordinates) {
+    piece.coordinates = std::move(a);
+    open_ = {pieces_.size() - 1, 0, true, true};
+  } else {
+    piece.point_data.push_back(std::move(a));
+    open_ = {pieces_.size() - 1, piece.point_data.size() - 1, false, true};
+  }
 }
 
 void VtpFile::scan() {

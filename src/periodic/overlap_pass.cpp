@@ -117,157 +117,146 @@ std::size_t cells_along(double extent, double h) {
   return g < 0x1p24 ? static_cast<std::size_t>(g) : std::size_t{1} << 24;
 }
 
-}  // namespace
+// The pass's state, shared by its steps: the cell, the wrapped disks sorted by grid cell, and the
+// pairs found.
+class OverlapPass {
+ public:
+  OverlapPass(const Domain& domain, std::span<const Disk> disks, const std::stop_token& stop)
+      : disks_(disks),
+        stop_(stop),
+        cell_(domain.bbox()),  // a periodic domain's one polygon is its cell
+        wraps_y_(domain.periodicity() == Periodicity::xy),
+        lx_(cell_.xmax - cell_.xmin),
+        ly_(cell_.ymax - cell_.ymin) {}
 
-void periodic_overlapping_pairs(const Domain& domain, std::span<const Disk> disks,
-                                std::vector<std::pair<std::size_t, std::size_t>>& out, std::size_t& candidates,
-                                const std::stop_token& stop) {
-  out.clear();
-  candidates = 0;
-  const Box cell = domain.bbox();  // a periodic domain's one polygon is its cell
-  const bool wraps_y = domain.periodicity() == Periodicity::xy;
-  const double lx = cell.xmax - cell.xmin;
-  const double ly = cell.ymax - cell.ymin;
+  void run(std::vector<std::pair<std::size_t, std::size_t>>& out, std::size_t& candidates) {
+    out.clear();
+    candidates = 0;
+    std::vector<Placed> placed = wrap_disks();
+    if (placed.empty()) {
+      return;
+    }
+    make_grid(placed.size());
+    sort_by_cell(std::move(placed));
+    own_images(out, candidates);
+    scan_cells(out, candidates);
+    std::sort(out.begin(), out.end());
+  }
 
-  std::vector<Placed> placed;
-  placed.reserve(disks.size());
-  double rmax = 0;
-  double magnitude = std::max({std::abs(cell.xmin), std::abs(cell.xmax), std::abs(cell.ymin), std::abs(cell.ymax)});
-  for (std::size_t i = 0; i < disks.size(); ++i) {
-    throw_if_stopped(stop, i);
-    const Disk& d = disks[i];
-    if (!takes_part(d)) {
-      continue;
+ private:
+  // Each disk that takes part, wrapped into the cell; sets rmax_ and tol_.
+  std::vector<Placed> wrap_disks() {
+    std::vector<Placed> placed;
+    placed.reserve(disks_.size());
+    double magnitude =
+        std::max({std::abs(cell_.xmin), std::abs(cell_.xmax), std::abs(cell_.ymin), std::abs(cell_.ymax)});
+    for (std::size_t i = 0; i < disks_.size(); ++i) {
+      throw_if_stopped(stop_, i);
+      const Disk& d = disks_[i];
+      if (!takes_part(d)) {
+        continue;
+      }
+      Placed w;
+      w.r = d.radius;
+      w.index = i;
+      if (!wrap_count(d.centre.x, cell_.xmin, cell_.xmax, lx_, w.kx)) {
+        continue;
+      }
+      if (wraps_y_ && !wrap_count(d.centre.y, cell_.ymin, cell_.ymax, ly_, w.ky)) {
+        continue;
+      }
+      const double shift_x = static_cast<double>(w.kx) * lx_;
+      const double shift_y = static_cast<double>(w.ky) * ly_;
+      w.p = Point{std::clamp(d.centre.x - shift_x, cell_.xmin, cell_.xmax),
+                  wraps_y_ ? std::clamp(d.centre.y - shift_y, cell_.ymin, cell_.ymax) : d.centre.y};
+      magnitude =
+          std::max({magnitude, std::abs(d.centre.x) + std::abs(shift_x), std::abs(d.centre.y) + std::abs(shift_y)});
+      rmax_ = std::max(rmax_, d.radius);
+      placed.push_back(w);
     }
-    Placed w;
-    w.r = d.radius;
-    w.index = i;
-    if (!wrap_count(d.centre.x, cell.xmin, cell.xmax, lx, w.kx)) {
-      continue;
-    }
-    if (wraps_y && !wrap_count(d.centre.y, cell.ymin, cell.ymax, ly, w.ky)) {
-      continue;
-    }
-    const double shift_x = static_cast<double>(w.kx) * lx;
-    const double shift_y = static_cast<double>(w.ky) * ly;
-    w.p = Point{std::clamp(d.centre.x - shift_x, cell.xmin, cell.xmax),
-                wraps_y ? std::clamp(d.centre.y - shift_y, cell.ymin, cell.ymax) : d.centre.y};
-    magnitude =
-        std::max({magnitude, std::abs(d.centre.x) + std::abs(shift_x), std::abs(d.centre.y) + std::abs(shift_y)});
-    rmax = std::max(rmax, d.radius);
-    placed.push_back(w);
+    // Each rounding above (the period, k L, c - k L, r_i + r_j, the box test's own subtraction) is
+    // at most 2^-53 of a magnitude below `magnitude + rmax`; a few of them add up far below 2^-46.
+    tol_ = 0x1p-46 * (magnitude + rmax_);
+    return placed;
   }
-  if (placed.empty()) {
-    return;
-  }
-  // Each rounding above (the period, k L, c - k L, r_i + r_j, the box test's own subtraction) is
-  // at most 2^-53 of a magnitude below `magnitude + rmax`; a few of them add up far below 2^-46.
-  const double tol = 0x1p-46 * (magnitude + rmax);
 
   // The grid: cells at least 2 rmax + 2 tol wide (a relative margin of 2^-20 covers the rounding
   // of the cell index), and no more cells than disks.
-  Axis ax;
-  ax.wraps = true;
-  ax.lo = cell.xmin;
-  ax.period = lx;
-  // y: the cell's rows; on a walled axis a centre beyond a wall falls in the first or last row
-  // (clamping the row index is monotone and never pulls two rows apart, so neighbours stay
-  // neighbours).
-  Axis ay;
-  ay.wraps = wraps_y;
-  ay.lo = cell.ymin;
-  ay.period = ly;
-  const double sparse = std::sqrt(lx * ly / static_cast<double>(placed.size()));
-  double h = (2 * rmax + 2 * tol) * (1 + 0x1p-20);
-  if (std::isfinite(sparse) && sparse > h) {
-    h = sparse;
+  void make_grid(std::size_t count) {
+    ax_.wraps = true;
+    ax_.lo = cell_.xmin;
+    ax_.period = lx_;
+    // y: the cell's rows; on a walled axis a centre beyond a wall falls in the first or last row
+    // (clamping the row index is monotone and never pulls two rows apart, so neighbours stay
+    // neighbours).
+    ay_.wraps = wraps_y_;
+    ay_.lo = cell_.ymin;
+    ay_.period = ly_;
+    const double sparse = std::sqrt(lx_ * ly_ / static_cast<double>(count));
+    double h = (2 * rmax_ + 2 * tol_) * (1 + 0x1p-20);
+    if (std::isfinite(sparse) && sparse > h) {
+      h = sparse;
+    }
+    ax_.n = cells_along(lx_, h);
+    ax_.scale = static_cast<double>(ax_.n) / lx_;
+    ay_.n = cells_along(ly_, h);
+    ay_.scale = static_cast<double>(ay_.n) / ly_;
   }
-  ax.n = cells_along(lx, h);
-  ax.scale = static_cast<double>(ax.n) / lx;
-  ay.n = cells_along(ly, h);
-  ay.scale = static_cast<double>(ay.n) / ly;
 
-  // Counting sort by cell, stable.
-  const std::size_t cells = ax.n * ay.n;
-  std::vector<std::size_t> start(cells + 1, 0);
-  std::vector<std::size_t> cell_of(placed.size());
-  for (std::size_t a = 0; a < placed.size(); ++a) {
-    cell_of[a] = ay.cell(placed[a].p.y) * ax.n + ax.cell(placed[a].p.x);
-    ++start[cell_of[a] + 1];
-  }
-  for (std::size_t c = 0; c < cells; ++c) {
-    start[c + 1] += start[c];
-  }
-  std::vector<Placed> sorted(placed.size());
-  {
-    std::vector<std::size_t> next(start.begin(), start.end() - 1);
+  // Counting sort by cell, stable: fills start_ and sorted_.
+  void sort_by_cell(std::vector<Placed> placed) {
+    const std::size_t cells = ax_.n * ay_.n;
+    start_.assign(cells + 1, 0);
+    std::vector<std::size_t> cell_of(placed.size());
     for (std::size_t a = 0; a < placed.size(); ++a) {
-      sorted[next[cell_of[a]]++] = placed[a];
+      cell_of[a] = ay_.cell(placed[a].p.y) * ax_.n + ax_.cell(placed[a].p.x);
+      ++start_[cell_of[a] + 1];
+    }
+    for (std::size_t c = 0; c < cells; ++c) {
+      start_[c + 1] += start_[c];
+    }
+    sorted_.resize(placed.size());
+    std::vector<std::size_t> next(start_.begin(), start_.end() - 1);
+    for (std::size_t a = 0; a < placed.size(); ++a) {
+      sorted_[next[cell_of[a]]++] = placed[a];
     }
   }
-  placed.clear();
-  placed.shrink_to_fit();
 
   // A disk and its own image (1, 0) or, on a torus, (0, 1): the shortest lattice vectors.
-  for (const Placed& w : sorted) {
-    const Point c = disks[w.index].centre;
-    const bool near_x = 2 * w.r + tol >= lx;
-    const bool near_y = wraps_y && 2 * w.r + tol >= ly;
-    if (near_x || near_y) {
-      ++candidates;
-      if ((near_x && compare_image_distance(c, c, w.r, w.r, 1, 0, cell) < 0) ||
-          (near_y && compare_image_distance(c, c, w.r, w.r, 0, 1, cell) < 0)) {
-        out.emplace_back(w.index, w.index);
+  void own_images(std::vector<std::pair<std::size_t, std::size_t>>& out, std::size_t& candidates) const {
+    for (const Placed& w : sorted_) {
+      const Point c = disks_[w.index].centre;
+      const bool near_x = 2 * w.r + tol_ >= lx_;
+      const bool near_y = wraps_y_ && 2 * w.r + tol_ >= ly_;
+      if (near_x || near_y) {
+        ++candidates;
+        if ((near_x && compare_image_distance(c, c, w.r, w.r, 1, 0, cell_) < 0) ||
+            (near_y && compare_image_distance(c, c, w.r, w.r, 0, 1, cell_) < 0)) {
+          out.emplace_back(w.index, w.index);
+        }
       }
     }
   }
 
-  const std::array<std::int64_t, 3> shifts = {-1, 0, 1};
-  const std::size_t sy_count = wraps_y ? 3 : 1;
-  const std::int64_t* sy_first = wraps_y ? shifts.data() : shifts.data() + 1;
-  std::array<std::size_t, 3> nx{};
-  std::array<std::size_t, 3> ny{};
-  for (std::size_t cy = 0; cy < ay.n; ++cy) {
-    throw_if_stopped(stop);
-    const std::size_t count_y = ay.neighbours(cy, ny);
-    for (std::size_t cx = 0; cx < ax.n; ++cx) {
-      const std::size_t own = cy * ax.n + cx;
-      if (start[own] == start[own + 1]) {
-        continue;
-      }
-      const std::size_t count_x = ax.neighbours(cx, nx);
-      for (std::size_t a = start[own]; a < start[own + 1]; ++a) {
-        const Placed& p = sorted[a];
-        for (std::size_t u = 0; u < count_y; ++u) {
-          for (std::size_t v = 0; v < count_x; ++v) {
-            const std::size_t other = ny[u] * ax.n + nx[v];
-            for (std::size_t b = std::max(start[other], a + 1); b < start[other + 1]; ++b) {
-              const Placed& q = sorted[b];
-              const double reach = p.r + q.r + tol;
-              bool met = false;
-              bool overlap = false;
-              for (std::size_t t = 0; t < sy_count && !overlap; ++t) {
-                const std::int64_t sy = sy_first[t];
-                if (!(std::abs(p.p.y - (q.p.y + static_cast<double>(sy) * ly)) <= reach)) {
-                  continue;
-                }
-                for (const std::int64_t sx : shifts) {
-                  if (!(std::abs(p.p.x - (q.p.x + static_cast<double>(sx) * lx)) <= reach)) {
-                    continue;
-                  }
-                  met = true;
-                  if (compare_image_distance(disks[p.index].centre, disks[q.index].centre, p.r, q.r, sx + p.kx - q.kx,
-                                             sy + p.ky - q.ky, cell) < 0) {
-                    overlap = true;
-                    break;
-                  }
-                }
-              }
-              if (met) {
-                ++candidates;
-              }
-              if (overlap) {
-                out.emplace_back(std::min(p.index, q.index), std::max(p.index, q.index));
+  // Every pair (a, b), a < b in sorted order, with b in a cell next to a's.
+  void scan_cells(std::vector<std::pair<std::size_t, std::size_t>>& out, std::size_t& candidates) const {
+    std::array<std::size_t, 3> nx{};
+    std::array<std::size_t, 3> ny{};
+    for (std::size_t cy = 0; cy < ay_.n; ++cy) {
+      throw_if_stopped(stop_);
+      const std::size_t count_y = ay_.neighbours(cy, ny);
+      for (std::size_t cx = 0; cx < ax_.n; ++cx) {
+        const std::size_t own = cy * ax_.n + cx;
+        if (start_[own] == start_[own + 1]) {
+          continue;
+        }
+        const std::size_t count_x = ax_.neighbours(cx, nx);
+        for (std::size_t a = start_[own]; a < start_[own + 1]; ++a) {
+          for (std::size_t u = 0; u < count_y; ++u) {
+            for (std::size_t v = 0; v < count_x; ++v) {
+              const std::size_t other = ny[u] * ax_.n + nx[v];
+              for (std::size_t b = std::max(start_[other], a + 1); b < start_[other + 1]; ++b) {
+                test_pair(sorted_[a], sorted_[b], out, candidates);
               }
             }
           }
@@ -275,7 +264,62 @@ void periodic_overlapping_pairs(const Domain& domain, std::span<const Disk> disk
       }
     }
   }
-  std::sort(out.begin(), out.end());
+
+  // The pair's images with shifts in {-1, 0, 1}^2 (s_y = 0 without y periodicity): counted when a
+  // box met, kept when one overlaps exactly.
+  void test_pair(const Placed& p, const Placed& q, std::vector<std::pair<std::size_t, std::size_t>>& out,
+                 std::size_t& candidates) const {
+    static constexpr std::array<std::int64_t, 3> kShifts = {-1, 0, 1};
+    const std::size_t sy_count = wraps_y_ ? 3 : 1;
+    const std::int64_t* sy_first = wraps_y_ ? kShifts.data() : kShifts.data() + 1;
+    const double reach = p.r + q.r + tol_;
+    bool met = false;
+    bool overlap = false;
+    for (std::size_t t = 0; t < sy_count && !overlap; ++t) {
+      const std::int64_t sy = sy_first[t];
+      if (!(std::abs(p.p.y - (q.p.y + static_cast<double>(sy) * ly_)) <= reach)) {
+        continue;
+      }
+      for (const std::int64_t sx : kShifts) {
+        if (!(std::abs(p.p.x - (q.p.x + static_cast<double>(sx) * lx_)) <= reach)) {
+          continue;
+        }
+        met = true;
+        if (compare_image_distance(disks_[p.index].centre, disks_[q.index].centre, p.r, q.r, sx + p.kx - q.kx,
+                                   sy + p.ky - q.ky, cell_) < 0) {
+          overlap = true;
+          break;
+        }
+      }
+    }
+    if (met) {
+      ++candidates;
+    }
+    if (overlap) {
+      out.emplace_back(std::min(p.index, q.index), std::max(p.index, q.index));
+    }
+  }
+
+  std::span<const Disk> disks_;
+  const std::stop_token& stop_;
+  Box cell_;
+  bool wraps_y_ = false;
+  double lx_ = 0;
+  double ly_ = 0;
+  double rmax_ = 0;
+  double tol_ = 0;
+  Axis ax_;
+  Axis ay_;
+  std::vector<std::size_t> start_;  // sorted_[start_[c], start_[c + 1]) lie in grid cell c
+  std::vector<Placed> sorted_;
+};
+
+}  // namespace
+
+void periodic_overlapping_pairs(const Domain& domain, std::span<const Disk> disks,
+                                std::vector<std::pair<std::size_t, std::size_t>>& out, std::size_t& candidates,
+                                const std::stop_token& stop) {
+  OverlapPass(domain, disks, stop).run(out, candidates);
 }
 
 double periodic_overlap_depth(const Domain& domain, const Disk& a, const Disk& b, bool same) {

@@ -48,59 +48,57 @@ double area_in_box(double x0, double x1, double y0, double y1, double r) {
   return std::max(area_above(x0, x1, y0, r) - area_above(x0, x1, y1, r), 0.0);
 }
 
-}  // namespace
+// The square cells over the bounding box, and each one's place in the list of interior cells
+// (-1 for a cell that is not interior).
+struct CellGrid {
+  Box b;
+  double side = 0;
+  std::size_t nx = 1;
+  std::size_t ny = 1;
+  std::vector<std::int64_t> index;
+};
 
-void measure_cell_coverage(const Domain& domain, std::span<const Disk> disks, const EdgeDistanceIndex& edges, double w,
-                           double side, const Budget& budget, CellCoverage& out, const std::stop_token& stop) {
-  out.cell_side = side;
-  const Box b = domain.bbox();
-  if (!(side > 0) || !(b.width() > 0) || !(b.height() > 0)) {
-    return;
-  }
+// Marks the interior cells in g.index; returns their covered areas, all 0. A cell is interior
+// when its centre is inside the domain and no edge comes within band_width plus the
+// half-diagonal of it (with a relative margin of 1e-9 for the rounding of the distances): then
+// the boundary misses the cell and every point of it is farther than w. In a periodic cell the
+// edges are the walls alone and a periodic side drops no square: the squares go on across it, the
+// last one wrapping around (it overlaps the first when the period is not a multiple of the side),
+// and the images of the disks cover its part beyond the side.
+std::vector<double> interior_cells(const Domain& domain, const EdgeDistanceIndex& edges, double w, CellGrid& g,
+                                   const std::stop_token& stop) {
   const Periods periods(domain);
-  const double gx = std::ceil(b.width() / side);
-  const double gy = std::ceil(b.height() / side);
-  // Per cell: its index and map entry, and for an interior cell its covered area.
-  check_count(budget, gx * gy, sizeof(std::int64_t) + 2 * sizeof(double), "coverage cells",
-              "use a larger cell side (--cell-side)");
-  const std::size_t nx = std::max<std::size_t>(static_cast<std::size_t>(gx), 1);
-  const std::size_t ny = std::max<std::size_t>(static_cast<std::size_t>(gy), 1);
-  // A cell is interior when its centre is inside the domain and no edge comes within band_width
-  // plus the half-diagonal of it (with a relative margin of 1e-9 for the rounding of the
-  // distances): then the boundary misses the cell and every point of it is farther than w. In a
-  // periodic cell the edges are the walls alone and a periodic side drops no square: the squares
-  // go on across it, the last one wrapping around (it overlaps the first when the period is not a
-  // multiple of the side), and the images of the disks cover its part beyond the side.
-  const double reach = (w + side * std::numbers::sqrt2 / 2) * (1 + 1e-9);
-  std::vector<std::int64_t> index(nx * ny, -1);
+  const double reach = (w + g.side * std::numbers::sqrt2 / 2) * (1 + 1e-9);
+  g.index.assign(g.nx * g.ny, -1);
   std::vector<double> covered;
-  for (std::size_t c = 0; c < nx * ny; ++c) {
+  for (std::size_t c = 0; c < g.nx * g.ny; ++c) {
     throw_if_stopped(stop, c);
-    const Point centre{b.xmin + (static_cast<double>(c % nx) + 0.5) * side,
-                       b.ymin + (static_cast<double>(c / nx) + 0.5) * side};
+    const Point centre{g.b.xmin + (static_cast<double>(c % g.nx) + 0.5) * g.side,
+                       g.b.ymin + (static_cast<double>(c / g.nx) + 0.5) * g.side};
     if (edges.distance(centre, reach) >= reach && locate_wrapped(domain, periods, centre) == Location::inside) {
-      index[c] = static_cast<std::int64_t>(covered.size());
+      g.index[c] = static_cast<std::int64_t>(covered.size());
       covered.push_back(0);
     }
   }
-  out.origin = {b.xmin, b.ymin};
-  out.nx = nx;
-  out.ny = ny;
-  out.map.assign(nx * ny, std::numeric_limits<double>::quiet_NaN());
-  if (covered.empty()) {
-    return;
-  }
+  return covered;
+}
+
+// Adds each disk's area in each interior cell it meets.
+void add_disk_areas(const CellGrid& g, std::span<const Disk> disks, std::vector<double>& covered,
+                    const std::stop_token& stop) {
+  const Box& b = g.b;
+  const double side = g.side;
   const double inv = 1 / side;
   for (std::size_t k = 0; k < disks.size(); ++k) {
     throw_if_stopped(stop, k);
     const Disk& d = disks[k];
-    const std::size_t i0 = cell_index(d.centre.x - d.radius, b.xmin, inv, nx);
-    const std::size_t i1 = cell_index(d.centre.x + d.radius, b.xmin, inv, nx);
-    const std::size_t j0 = cell_index(d.centre.y - d.radius, b.ymin, inv, ny);
-    const std::size_t j1 = cell_index(d.centre.y + d.radius, b.ymin, inv, ny);
+    const std::size_t i0 = cell_index(d.centre.x - d.radius, b.xmin, inv, g.nx);
+    const std::size_t i1 = cell_index(d.centre.x + d.radius, b.xmin, inv, g.nx);
+    const std::size_t j0 = cell_index(d.centre.y - d.radius, b.ymin, inv, g.ny);
+    const std::size_t j1 = cell_index(d.centre.y + d.radius, b.ymin, inv, g.ny);
     for (std::size_t j = j0; j <= j1; ++j) {
       for (std::size_t i = i0; i <= i1; ++i) {
-        const std::int64_t at = index[j * nx + i];
+        const std::int64_t at = g.index[j * g.nx + i];
         if (at < 0) {
           continue;
         }
@@ -115,15 +113,20 @@ void measure_cell_coverage(const Domain& domain, std::span<const Disk> disks, co
       }
     }
   }
-  const double area = side * side;
+}
+
+// The covered fractions as the map, and their percentiles and standard deviation; `covered` is
+// not empty (and is left as fractions, sorted).
+void summarise(const CellGrid& g, std::vector<double>& covered, CellCoverage& out) {
+  const double area = g.side * g.side;
   double sum = 0;
   for (double& a : covered) {
     a /= area;
     sum += a;
   }
-  for (std::size_t c = 0; c < nx * ny; ++c) {
-    if (index[c] >= 0) {
-      out.map[c] = covered[static_cast<std::size_t>(index[c])];
+  for (std::size_t c = 0; c < g.nx * g.ny; ++c) {
+    if (g.index[c] >= 0) {
+      out.map[c] = covered[static_cast<std::size_t>(g.index[c])];
     }
   }
   const auto n = static_cast<double>(covered.size());
@@ -143,6 +146,37 @@ void measure_cell_coverage(const Domain& domain, std::span<const Disk> disks, co
   out.p5 = percentile(0.05);
   out.p50 = percentile(0.5);
   out.sd = std::sqrt(ss / n);
+}
+
+}  // namespace
+
+void measure_cell_coverage(const Domain& domain, std::span<const Disk> disks, const EdgeDistanceIndex& edges, double w,
+                           double side, const Budget& budget, CellCoverage& out, const std::stop_token& stop) {
+  out.cell_side = side;
+  const Box b = domain.bbox();
+  if (!(side > 0) || !(b.width() > 0) || !(b.height() > 0)) {
+    return;
+  }
+  const double gx = std::ceil(b.width() / side);
+  const double gy = std::ceil(b.height() / side);
+  // Per cell: its index and map entry, and for an interior cell its covered area.
+  check_count(budget, gx * gy, sizeof(std::int64_t) + 2 * sizeof(double), "coverage cells",
+              "use a larger cell side (--cell-side)");
+  CellGrid g;
+  g.b = b;
+  g.side = side;
+  g.nx = std::max<std::size_t>(static_cast<std::size_t>(gx), 1);
+  g.ny = std::max<std::size_t>(static_cast<std::size_t>(gy), 1);
+  std::vector<double> covered = interior_cells(domain, edges, w, g, stop);
+  out.origin = {b.xmin, b.ymin};
+  out.nx = g.nx;
+  out.ny = g.ny;
+  out.map.assign(g.nx * g.ny, std::numeric_limits<double>::quiet_NaN());
+  if (covered.empty()) {
+    return;
+  }
+  add_disk_areas(g, disks, covered, stop);
+  summarise(g, covered, out);
 }
 
 }  // namespace frontpack::detail

@@ -18,9 +18,9 @@
 #include "common/budget.hpp"
 #include "common/format.hpp"
 #include "common/stop.hpp"
+#include "periodic/disk_images.hpp"
 #include "stats/clearance.hpp"
 #include "stats/parts.hpp"
-#include "periodic/disk_images.hpp"
 
 namespace frontpack {
 
@@ -206,9 +206,9 @@ void measure_voids(const Domain& domain, std::span<const Disk> disks, const deta
   }
 }
 
-}  // namespace
-
-PackingStats measure(const Domain& domain, std::span<const Disk> disks, const StatsOptions& options) {
+// The largest |coordinate| or radius and the largest radius of the disks; throws
+// std::invalid_argument naming the first disk without a finite centre and a finite radius > 0.
+std::pair<double, double> checked_extents(std::span<const Disk> disks) {
   double largest = 0;  // |coordinate| or radius
   double largest_radius = 0;
   for (std::size_t k = 0; k < disks.size(); ++k) {
@@ -221,13 +221,13 @@ PackingStats measure(const Domain& domain, std::span<const Disk> disks, const St
     largest = std::max({largest, std::abs(d.centre.x), std::abs(d.centre.y), d.radius});
     largest_radius = std::max(largest_radius, d.radius);
   }
-  // A domain and disks so small that areas and squared distances underflow (a domain at 1e-200):
-  // measured at the scale of 1, unless a disk would then overflow.
-  if (const double k = square_safe_scale(domain.max_abs_coordinate() + 5 * largest_radius);
-      k > 1 && std::isfinite(largest * k)) {
-    return measure_scaled(domain, disks, options, k);
-  }
-  PackingStats s;
+  return {largest, largest_radius};
+}
+
+// Areas, sizes, the packing fraction and void ratio, and the band width and contact gap that the
+// later measures use (the options' or their defaults from the largest radius).
+void measure_areas_and_sizes(const Domain& domain, std::span<const Disk> disks, const StatsOptions& options,
+                             PackingStats& s) {
   s.disks = disks.size();
   s.domain_area = domain.area();
   std::vector<double> radii;
@@ -250,23 +250,13 @@ PackingStats measure(const Domain& domain, std::span<const Disk> disks, const St
           ? options.contact_gap
           : std::max(1e-9 * rmax, 0x1p-42 * std::min(domain.max_abs_coordinate() + 5 * rmax,
                                                      std::numeric_limits<double>::max()));  // (finite for any radius)
+}
+
+// Contacts between disks (with their images) and with the walls, the coordination histogram,
+// rattlers, and the mean coordinations overall, without rattlers and in the interior.
+void measure_contacts(std::span<const Disk> disks, const detail::DiskImages& images, const EdgeDistanceIndex& edges,
+                      const StatsOptions& options, PackingStats& s) {
   const double w = s.band_width;
-  // The sample points are the caller's own number (StatsOptions::samples), made a row at a time:
-  // no memory grows with them, and holding them to max_count would let a small max_count for the
-  // disks (fill --max-disks) refuse the statistics of the packing it allowed.
-  // The walls (a periodic cell's real walls alone) and the disks with their images across the
-  // periodic sides: what every measure below sees of the domain.
-  const EdgeDistanceIndex edges(domain);
-  s.walls = edges.has_walls();
-  const detail::Periods periods(domain);
-  const double reach = image_reach(options, s, hole_radii(options, s, disks.size()), periods);
-  const detail::DiskImages images(periods, disks, reach, options.budget);
-  sample_fractions(domain, images.all(), edges, w, options.samples, options.coverage_profile ? rmax : 0, s,
-                   options.stop);
-  measure_voids(domain, disks, images, reach, edges, options, s);
-  if (disks.empty() || !options.contacts) {
-    return s;
-  }
   std::vector<std::size_t> degree(disks.size(), 0);
   count_contacts(images, s.contact_gap, s, degree, options.stop);
   std::size_t interior_contacts = 0;
@@ -297,7 +287,11 @@ PackingStats measure(const Domain& domain, std::span<const Disk> disks, const St
       non_rattlers > 0 ? static_cast<double>(non_rattler_contacts) / non_rattlers : 0;
   s.interior_coordination =
       s.interior_disks > 0 ? static_cast<double>(interior_contacts) / static_cast<double>(s.interior_disks) : 0;
+}
 
+// Segregation: the sizes of the band disks against those inside, by area.
+void measure_segregation(std::span<const Disk> disks, const EdgeDistanceIndex& edges, PackingStats& s) {
+  const double w = s.band_width;
   std::vector<double> band;
   std::vector<double> inside;
   // A band disk comes within w / 2 of the boundary: its gap to the walls, not its centre, decides,
@@ -311,6 +305,38 @@ PackingStats measure(const Domain& domain, std::span<const Disk> disks, const St
   s.band_median_area = median_by_area(band);
   s.inside_median_area = median_by_area(inside);
   s.segregation_ks_area = ks_by_area(band, inside);
+}
+
+}  // namespace
+
+PackingStats measure(const Domain& domain, std::span<const Disk> disks, const StatsOptions& options) {
+  const auto [largest, largest_radius] = checked_extents(disks);
+  // A domain and disks so small that areas and squared distances underflow (a domain at 1e-200):
+  // measured at the scale of 1, unless a disk would then overflow.
+  if (const double k = square_safe_scale(domain.max_abs_coordinate() + 5 * largest_radius);
+      k > 1 && std::isfinite(largest * k)) {
+    return measure_scaled(domain, disks, options, k);
+  }
+  PackingStats s;
+  measure_areas_and_sizes(domain, disks, options, s);
+  // The sample points are the caller's own number (StatsOptions::samples), made a row at a time:
+  // no memory grows with them, and holding them to max_count would let a small max_count for the
+  // disks (fill --max-disks) refuse the statistics of the packing it allowed.
+  // The walls (a periodic cell's real walls alone) and the disks with their images across the
+  // periodic sides: what every measure below sees of the domain.
+  const EdgeDistanceIndex edges(domain);
+  s.walls = edges.has_walls();
+  const detail::Periods periods(domain);
+  const double reach = image_reach(options, s, hole_radii(options, s, disks.size()), periods);
+  const detail::DiskImages images(periods, disks, reach, options.budget);
+  sample_fractions(domain, images.all(), edges, s.band_width, options.samples,
+                   options.coverage_profile ? s.sizes.rmax : 0, s, options.stop);
+  measure_voids(domain, disks, images, reach, edges, options, s);
+  if (disks.empty() || !options.contacts) {
+    return s;
+  }
+  measure_contacts(disks, images, edges, options, s);
+  measure_segregation(disks, edges, s);
   return s;
 }
 
