@@ -184,10 +184,9 @@ void write_yade(std::ostream& out, std::span<const Disk> disks, std::span<const 
   }
 }
 
-void write_lammps(std::ostream& out, std::span<const Disk> disks, std::span<const std::uint32_t> types, const Box& box,
-                  const LammpsOptions& options, std::stop_token stop) {
-  check_disks("LAMMPS", disks);
-  check_types("LAMMPS", disks, types);
+namespace {
+
+void check_lammps_options(const LammpsOptions& options, const Box& box) {
   if (!(std::isfinite(options.density) && options.density > 0)) {
     throw OptionError("LAMMPS density " + detail::format_double(options.density) + " must be a finite number > 0");
   }
@@ -198,8 +197,13 @@ void write_lammps(std::ostream& out, std::span<const Disk> disks, std::span<cons
       !std::isfinite(box.ymax)) {
     throw OptionError("LAMMPS box must be finite and non-empty");
   }
-  const bool wraps_x = options.periodicity != Periodicity::none;
-  const bool wraps_y = options.periodicity == Periodicity::xy;
+}
+
+// The largest radius, once every disk is checked to lie in the box (on a periodic axis, its centre
+// in the half-open box).
+double lammps_rmax(std::span<const Disk> disks, const Box& box, Periodicity periodicity) {
+  const bool wraps_x = periodicity != Periodicity::none;
+  const bool wraps_y = periodicity == Periodicity::xy;
   double rmax = 0;
   for (std::size_t i = 0; i < disks.size(); ++i) {
     const Disk& d = disks[i];
@@ -218,32 +222,53 @@ void write_lammps(std::ostream& out, std::span<const Disk> disks, std::span<cons
     }
     rmax = std::max(rmax, d.radius);
   }
+  return rmax;
+}
+
+// With per-disk types: the number of atom types written (`type`) and each type's density.
+std::vector<std::string> lammps_type_densities(const LammpsOptions& options, std::span<const std::uint32_t> types,
+                                               std::string& type) {
+  std::vector<std::string> densities;
+  if (types.empty()) {
+    return densities;
+  }
+  const std::uint32_t largest = *std::max_element(types.begin(), types.end());
+  if (options.atom_types != 0 && options.atom_types < largest) {
+    throw OptionError("LAMMPS atom types " + std::to_string(options.atom_types) + " is below the largest type " +
+                      std::to_string(largest));
+  }
+  type = std::to_string(options.atom_types != 0 ? options.atom_types : std::int64_t{largest});
+  if (!options.type_densities.empty() && options.type_densities.size() < largest) {
+    throw OptionError("LAMMPS type densities: " + std::to_string(options.type_densities.size()) +
+                      " given, but the largest type is " + std::to_string(largest));
+  }
+  for (std::uint32_t t = 1; t <= largest; ++t) {
+    const double rho = options.type_densities.empty() ? options.density : options.type_densities[t - 1];
+    if (!(std::isfinite(rho) && rho > 0)) {
+      throw OptionError("LAMMPS density of type " + std::to_string(t) + ", " + detail::format_double(rho) +
+                        ", must be a finite number > 0");
+    }
+    densities.push_back(detail::format_double(rho));
+  }
+  return densities;
+}
+
+}  // namespace
+
+void write_lammps(std::ostream& out, std::span<const Disk> disks, std::span<const std::uint32_t> types, const Box& box,
+                  const LammpsOptions& options, std::stop_token stop) {
+  check_disks("LAMMPS", disks);
+  check_types("LAMMPS", disks, types);
+  check_lammps_options(options, box);
+  const bool wraps_x = options.periodicity != Periodicity::none;
+  const bool wraps_y = options.periodicity == Periodicity::xy;
+  const double rmax = lammps_rmax(disks, box, options.periodicity);
   // Dimension 2 needs a z range that straddles 0 (and a periodic z boundary); one largest
   // diameter thick, the packing is also a valid monolayer for a 3D run.
   const std::string zhi = detail::format_double(rmax > 0 ? rmax : 0.5);
   const std::string density = detail::format_double(options.density);
   std::string type = std::to_string(options.atom_type);
-  std::vector<std::string> densities;  // per type, with types
-  if (!types.empty()) {
-    const std::uint32_t largest = *std::max_element(types.begin(), types.end());
-    if (options.atom_types != 0 && options.atom_types < largest) {
-      throw OptionError("LAMMPS atom types " + std::to_string(options.atom_types) + " is below the largest type " +
-                        std::to_string(largest));
-    }
-    type = std::to_string(options.atom_types != 0 ? options.atom_types : std::int64_t{largest});
-    if (!options.type_densities.empty() && options.type_densities.size() < largest) {
-      throw OptionError("LAMMPS type densities: " + std::to_string(options.type_densities.size()) +
-                        " given, but the largest type is " + std::to_string(largest));
-    }
-    for (std::uint32_t t = 1; t <= largest; ++t) {
-      const double rho = options.type_densities.empty() ? options.density : options.type_densities[t - 1];
-      if (!(std::isfinite(rho) && rho > 0)) {
-        throw OptionError("LAMMPS density of type " + std::to_string(t) + ", " + detail::format_double(rho) +
-                          ", must be a finite number > 0");
-      }
-      densities.push_back(detail::format_double(rho));
-    }
-  }
+  const std::vector<std::string> densities = lammps_type_densities(options, types, type);  // per type, with types
   out << "LAMMPS data file (atom_style sphere, 2D: z = 0"
       << (wraps_y   ? "; periodic cell: boundary p p p"
           : wraps_x ? "; periodic in x, walls in y: boundary p f p"
