@@ -62,6 +62,12 @@ struct FileFormat {
 /// Every format, in the order of every list: the disk formats, the pictures, the domain formats.
 [[nodiscard]] std::span<const FileFormat> file_formats() noexcept;
 
+/// The row the library writes, reads disks or reads a domain as `format`; nullptr for a value
+/// outside the enum (and for DomainFormat::automatic, which is no format).
+[[nodiscard]] const FileFormat* format_row(Format format) noexcept;
+[[nodiscard]] const FileFormat* format_row(DiskFormat format) noexcept;
+[[nodiscard]] const FileFormat* format_row(DomainFormat format) noexcept;
+
 /// What a lookup or a list is for: the rows a use takes.
 enum class FormatUse : std::uint8_t {
   library_writes,  ///< written_as

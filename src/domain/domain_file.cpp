@@ -52,10 +52,8 @@ const char* to_string(DomainFormat format) noexcept {
   if (format == DomainFormat::automatic) {
     return "auto";
   }
-  const auto rows = file_formats();
-  const auto it =
-      std::find_if(rows.begin(), rows.end(), [format](const FileFormat& f) { return f.domain_as == format; });
-  return it == rows.end() ? "unknown" : it->name.data();  // the table's names are string literals
+  const FileFormat* row = format_row(format);
+  return row != nullptr ? row->name.data() : "unknown";  // the table's names are string literals
 }
 
 DomainFormat parse_domain_format(std::string_view name) {

@@ -4,6 +4,19 @@
 
 namespace frontpack::detail::validation {
 
+namespace {
+
+// The ends of edges e and f: A -> B and C -> D.
+struct EdgeEnds {
+  Point A, B, C, D;
+};
+
+EdgeEnds ends_of(const RingSet& rs, std::uint32_t e, std::uint32_t f) noexcept {
+  return {rs.v[e], rs.v[rs.next[e]], rs.v[f], rs.v[rs.next[f]]};
+}
+
+}  // namespace
+
 // The pairwise pass reports the problem with the smallest key, whatever the order the pairs come
 // in. Two things keep it from enumerating millions of pairs where a ring collapses into a few
 // ulps (every pair of its edges' boxes meets: 16,384 vertices took 6.6-8.7 s):
@@ -228,10 +241,7 @@ void Validator::find_hubs() {
 // The box pass's classification, leaving the pairs that meet at a hub to find_hubs(): two
 // edges with a common endpoint that are not consecutive in one ring.
 void Validator::classify_unless_hub(std::uint32_t e, std::uint32_t f) {
-  const Point A = rs_.v[e];
-  const Point B = rs_.v[rs_.next[e]];
-  const Point C = rs_.v[f];
-  const Point D = rs_.v[rs_.next[f]];
+  const auto [A, B, C, D] = ends_of(rs_, e, f);
   if ((A == C || A == D || B == C || B == D) && rs_.next[e] != f && rs_.next[f] != e) {
     return;
   }
@@ -243,10 +253,7 @@ void Validator::classify(std::uint32_t e, std::uint32_t f) {
   if (f < e) {
     std::swap(e, f);  // name the edges in input order
   }
-  const Point A = rs_.v[e];
-  const Point B = rs_.v[rs_.next[e]];
-  const Point C = rs_.v[f];
-  const Point D = rs_.v[rs_.next[f]];
+  const auto [A, B, C, D] = ends_of(rs_, e, f);
   if (rs_.ring_of[e] == rs_.ring_of[f] && (rs_.next[e] == f || rs_.next[f] == e)) {
     classify_consecutive(e, f);
     return;
@@ -279,10 +286,7 @@ void Validator::classify(std::uint32_t e, std::uint32_t f) {
 }
 
 void Validator::classify_consecutive(std::uint32_t e, std::uint32_t f) {
-  const Point A = rs_.v[e];
-  const Point B = rs_.v[rs_.next[e]];
-  const Point C = rs_.v[f];
-  const Point D = rs_.v[rs_.next[f]];
+  const auto [A, B, C, D] = ends_of(rs_, e, f);
   // Consecutive edges p -> s -> q meet at s; they overlap only if q folds back onto p's side.
   const bool e_first = rs_.next[e] == f;
   const Point p = e_first ? A : C;
@@ -298,10 +302,7 @@ void Validator::classify_consecutive(std::uint32_t e, std::uint32_t f) {
 }
 
 void Validator::classify_collinear(std::uint32_t e, std::uint32_t f) {
-  const Point A = rs_.v[e];
-  const Point B = rs_.v[rs_.next[e]];
-  const Point C = rs_.v[f];
-  const Point D = rs_.v[rs_.next[f]];
+  const auto [A, B, C, D] = ends_of(rs_, e, f);
   const std::uint32_t re = rs_.ring_of[e];
   const std::uint32_t rf = rs_.ring_of[f];
   // Compare the two intervals on the line along a non-degenerate axis.
@@ -340,10 +341,7 @@ void Validator::report_crossing(std::uint32_t e, std::uint32_t f) {
   if (!improves(e, f)) {
     return;
   }
-  const Point A = rs_.v[e];
-  const Point B = rs_.v[rs_.next[e]];
-  const Point C = rs_.v[f];
-  const Point D = rs_.v[rs_.next[f]];
+  const auto [A, B, C, D] = ends_of(rs_, e, f);
   const std::uint32_t re = rs_.ring_of[e];
   const std::uint32_t rf = rs_.ring_of[f];
   const auto x =

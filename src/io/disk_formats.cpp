@@ -1,6 +1,5 @@
 // The disk readers' formats by name and extension (the table of formats, frontpack/formats.hpp),
 // and read_disks() choosing the reader.
-#include <algorithm>
 #include <fstream>
 #include <string>
 
@@ -9,20 +8,8 @@
 
 namespace frontpack {
 
-namespace {
-
-// The row of the table of formats that the library reads as `format`; nullptr for a value outside
-// the enum.
-const FileFormat* row_of(DiskFormat format) noexcept {
-  const auto rows = file_formats();
-  const auto it = std::find_if(rows.begin(), rows.end(), [format](const FileFormat& f) { return f.read_as == format; });
-  return it == rows.end() ? nullptr : &*it;
-}
-
-}  // namespace
-
 const char* to_string(DiskFormat format) noexcept {
-  const FileFormat* row = row_of(format);
+  const FileFormat* row = format_row(format);
   return row != nullptr ? row->name.data() : "unknown";  // the table's names are string literals
 }
 

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <array>
+#include <optional>
 #include <vector>
 
 namespace frontpack {
@@ -67,7 +68,27 @@ std::string joined(const std::vector<std::string>& items) {
   return out;
 }
 
+// The row whose `member` is `value`.
+template <class Enum>
+const FileFormat* row_where(std::optional<Enum> FileFormat::*member, Enum value) noexcept {
+  const auto rows = file_formats();
+  const auto it = std::find_if(rows.begin(), rows.end(), [&](const FileFormat& f) { return f.*member == value; });
+  return it == rows.end() ? nullptr : &*it;
+}
+
 }  // namespace
+
+const FileFormat* format_row(Format format) noexcept {
+  return row_where(&FileFormat::written_as, format);
+}
+
+const FileFormat* format_row(DiskFormat format) noexcept {
+  return row_where(&FileFormat::read_as, format);
+}
+
+const FileFormat* format_row(DomainFormat format) noexcept {
+  return row_where(&FileFormat::domain_as, format);
+}
 
 std::span<const FileFormat> file_formats() noexcept {
   return kTable;

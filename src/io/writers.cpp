@@ -54,19 +54,10 @@ void check_disks(const char* format, std::span<const Disk> disks) {
   }
 }
 
-// The row of the table of formats that the library writes as `format`; nullptr for a value
-// outside the enum.
-const FileFormat* row_of(Format format) noexcept {
-  const auto rows = file_formats();
-  const auto it =
-      std::find_if(rows.begin(), rows.end(), [format](const FileFormat& f) { return f.written_as == format; });
-  return it == rows.end() ? nullptr : &*it;
-}
-
 }  // namespace
 
 const char* to_string(Format format) noexcept {
-  const FileFormat* row = row_of(format);
+  const FileFormat* row = format_row(format);
   return row != nullptr ? row->name.data() : "unknown";  // the table's names are string literals
 }
 
