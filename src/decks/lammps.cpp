@@ -4,9 +4,9 @@
 #include <string>
 
 #include "common/format.hpp"
+#include "decks/physics.hpp"
 #include "frontpack/io.hpp"
 #include "frontpack/version.hpp"
-#include "decks/physics.hpp"
 
 namespace frontpack::detail {
 

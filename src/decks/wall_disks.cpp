@@ -19,8 +19,8 @@
 
 #include "common/budget.hpp"
 #include "common/format.hpp"
-#include "frontpack/deck.hpp"
 #include "decks/wall_chain.hpp"
+#include "frontpack/deck.hpp"
 
 namespace frontpack {
 

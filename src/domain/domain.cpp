@@ -13,9 +13,9 @@
 #include "common/format.hpp"
 #include "common/read_file.hpp"
 #include "domain/edge_grid.hpp"
-#include "periodic/cell.hpp"
 #include "domain/ring_set.hpp"
 #include "domain/wkt_reader.hpp"
+#include "periodic/cell.hpp"
 
 namespace frontpack {
 

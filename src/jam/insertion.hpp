@@ -15,8 +15,8 @@
 #include "frontpack/domain.hpp"
 #include "frontpack/geometry.hpp"
 #include "frontpack/sizes.hpp"
-#include "periodic/wrap.hpp"
 #include "jam/disk_cells.hpp"
+#include "periodic/wrap.hpp"
 
 namespace frontpack::detail {
 

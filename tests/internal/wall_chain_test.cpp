@@ -6,9 +6,9 @@
 #include <string>
 #include <vector>
 
+#include "decks/wall_chain.hpp"
 #include "frontpack/domain.hpp"
 #include "frontpack/errors.hpp"
-#include "decks/wall_chain.hpp"
 
 namespace {
 

@@ -13,11 +13,11 @@
 
 #include "common/huge_pages.hpp"
 #include "generate/boundary/walls.hpp"
-#include "periodic/wrap.hpp"
 #include "generate/run_control.hpp"
 #include "generate/scale.hpp"
 #include "generate/settings.hpp"
 #include "generate/tangency.hpp"
+#include "periodic/wrap.hpp"
 
 namespace frontpack::detail {
 
