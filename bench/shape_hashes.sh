@@ -9,7 +9,11 @@
 #   bench/shape_hashes.sh build/release/tools/frontpack > before.txt   # on the old commit
 #   bench/shape_hashes.sh build/release/tools/frontpack > after.txt    # on the new one
 #   diff before.txt after.txt
+#
+# With HASH_JSON_DIR=DIR each JSON summary is also kept (timings stripped) as DIR/LABEL.json;
+# bench/compare_json.py BEFORE_DIR AFTER_DIR then tells keys added from values changed.
 set -euo pipefail
+[ -n "${HASH_JSON_DIR:-}" ] && mkdir -p "$HASH_JSON_DIR" 
 tool=${1:-build/release/tools/frontpack}
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 tmp=$(mktemp -d)
