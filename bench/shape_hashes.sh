@@ -13,7 +13,7 @@
 # With HASH_JSON_DIR=DIR each JSON summary is also kept (timings stripped) as DIR/LABEL.json;
 # bench/compare_json.py BEFORE_DIR AFTER_DIR then tells keys added from values changed.
 set -euo pipefail
-[ -n "${HASH_JSON_DIR:-}" ] && mkdir -p "$HASH_JSON_DIR" 
+if [ -n "${HASH_JSON_DIR:-}" ]; then mkdir -p "$HASH_JSON_DIR"; fi
 tool=${1:-build/release/tools/frontpack}
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 tmp=$(mktemp -d)
