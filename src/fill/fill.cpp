@@ -40,9 +40,7 @@ detail::FrontSettings front_settings(const Domain& domain, const FillOptions& op
   req.method = options.method;
   req.radii = &radii;
   req.window = options.window;
-  if (options.start && domain.num_polygons() == 1) {
-    req.start = options.start;
-  }
+  req.start = options.start;  // check_options(): with a start point, the domain is one polygon
   req.clearance = clearance;
   req.max_disks = std::min(options.max_disks, generation_cap);
   req.memory_limit = memory_bytes;
@@ -168,7 +166,7 @@ Packing run_plain(const Domain& domain, const FillOptions& options,
   return packing;
 }
 
-// A fill to a fraction, count or level runs the plain fill (target/targets.hpp).
+// A fill to a fraction, count or level runs the plain fill (targets/targets.hpp).
 Packing run_fill(const Domain& domain, const FillOptions& options,
                  const std::function<bool(const Progress&)>& progress) {
   check_options(domain, options);
